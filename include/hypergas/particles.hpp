@@ -1,0 +1,208 @@
+// hypergas/particles.hpp -- structure-of-arrays particle storage with compile-time fields.
+//
+// A scene states at compile time which optional fields it has (`Features`). A field that is
+// absent is an empty member marked [[no_unique_address]]: it takes no bytes, and every
+// accessor for it is removed by a `requires` clause, so code that would touch it does not
+// compile. Velocities (and positions, when present) live in one flat array each with a
+// fixed stride per particle (`Particles::stride`), padded to a power of two for D = 3, 5, 6
+// so that one particle never straddles more cache lines than it must.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hypergas/error.hpp"
+#include "hypergas/vec.hpp"
+
+namespace hypergas {
+
+/// The optional per-particle fields of a scene. A C++20 structural type, so it can be a
+/// template argument: `Particles<3, Features{.positions = true}>`.
+struct Features {
+  bool positions = false;  ///< positions (event-driven MD); velocity-space scenes have none
+  bool masses = false;     ///< one mass per particle (stored as inverse mass)
+  bool radii = false;      ///< one radius per particle
+  bool species = false;    ///< a small species index per particle; mass from a species table
+  constexpr bool operator==(const Features&) const = default;
+};
+
+/// Most species a scene may have (species index is one byte).
+inline constexpr int max_species = 4;
+
+namespace detail {
+/// Empty stand-in for an absent field; the tag keeps absent fields distinct types so that
+/// several of them can share one address under [[no_unique_address]].
+template <int Tag>
+struct Absent {};
+
+template <bool Present, class T, int Tag>
+using Field = std::conditional_t<Present, T, Absent<Tag>>;
+
+/// Doubles per particle in a flat vector array: D rounded up to a power of two for D = 3,
+/// 5, 6 (32- and 64-byte records stay inside one cache line when the array is aligned).
+constexpr int padded_stride(int d) { return d == 3 ? 4 : (d == 5 || d == 6) ? 8 : d; }
+
+template <class T>
+using AlignedVector = std::vector<T, Eigen::aligned_allocator<T>>;
+}  // namespace detail
+
+/// Particle storage for `n` particles in D dimensions with optional fields `F`.
+/// Units are those of the engine that owns it (see the engines' docs).
+template <int D, Features F = Features{}>
+  requires Dimension<D>
+class Particles {
+ public:
+  static constexpr int dim = D;
+  static constexpr Features features = F;
+  static constexpr int stride = detail::padded_stride(D);
+
+  using VecMap = Eigen::Map<Vec<D>>;
+  using ConstVecMap = Eigen::Map<const Vec<D>>;
+  using FlatArray = detail::AlignedVector<double>;
+  using PositionArray = detail::Field<F.positions, FlatArray, 0>;
+  using MassArray = detail::Field<F.masses, std::vector<double>, 1>;
+  using RadiusArray = detail::Field<F.radii, std::vector<double>, 2>;
+  using SpeciesArray = detail::Field<F.species, std::vector<std::uint8_t>, 3>;
+  using SpeciesTable = detail::Field<F.species, std::array<double, max_species>, 4>;
+
+  Particles() = default;
+  /// `n` particles at rest, unit mass; positions (if any) at the origin.
+  explicit Particles(std::size_t n) { resize(n); }
+
+  /// Sets the number of particles; new entries are zero (velocity, position), mass 1,
+  /// radius 0.5 (diameter 1), species 0.
+  void resize(std::size_t n) {
+    n_ = n;
+    v_.assign(n * stride, 0.0);
+    if constexpr (F.positions) x_.assign(n * stride, 0.0);
+    if constexpr (F.masses) w_.assign(n, 1.0);
+    if constexpr (F.radii) r_.assign(n, 0.5);
+    if constexpr (F.species) {
+      s_.assign(n, 0);
+      species_w_.fill(1.0);
+    }
+  }
+
+  std::size_t size() const { return n_; }
+
+  /// Velocity of particle i as an assignable Eigen view.
+  VecMap velocity(std::size_t i) { return VecMap(v_.data() + i * stride); }
+  ConstVecMap velocity(std::size_t i) const { return ConstVecMap(v_.data() + i * stride); }
+
+  /// Position of particle i (only in scenes with positions).
+  VecMap position(std::size_t i)
+    requires(F.positions)
+  {
+    return VecMap(x_.data() + i * stride);
+  }
+  ConstVecMap position(std::size_t i) const
+    requires(F.positions)
+  {
+    return ConstVecMap(x_.data() + i * stride);
+  }
+
+  /// Inverse mass of particle i (1/mass; 0 for an infinite mass). Unit mass when the scene
+  /// has neither masses nor species: a constant the compiler folds away.
+  double inv_mass(std::size_t i) const {
+    if constexpr (F.masses) return w_[i];
+    else if constexpr (F.species) return species_w_[s_[i]];
+    else {
+      (void)i;
+      return 1.0;
+    }
+  }
+  /// Mass of particle i (infinity for inverse mass 0).
+  double mass(std::size_t i) const { return 1.0 / inv_mass(i); }
+
+  /// Sets the mass of particle i; throws InvalidInput unless m > 0 (infinity allowed).
+  void set_mass(std::size_t i, double m)
+    requires(F.masses)
+  {
+    check_mass(m);
+    w_[i] = 1.0 / m;
+  }
+
+  /// Radius of particle i (only in scenes with radii).
+  double radius(std::size_t i) const
+    requires(F.radii)
+  {
+    return r_[i];
+  }
+  void set_radius(std::size_t i, double r)
+    requires(F.radii)
+  {
+    if (!(std::isfinite(r) && r > 0.0)) throw InvalidInput("radius must be finite and > 0");
+    r_[i] = r;
+  }
+
+  /// Species index of particle i (only in scenes with species).
+  int species(std::size_t i) const
+    requires(F.species)
+  {
+    return s_[i];
+  }
+  void set_species(std::size_t i, int s)
+    requires(F.species)
+  {
+    if (s < 0 || s >= max_species) throw InvalidInput("species index out of range");
+    s_[i] = static_cast<std::uint8_t>(s);
+  }
+  /// Mass of every particle of species s.
+  void set_species_mass(int s, double m)
+    requires(F.species)
+  {
+    if (s < 0 || s >= max_species) throw InvalidInput("species index out of range");
+    check_mass(m);
+    species_w_[s] = 1.0 / m;
+  }
+  double species_inv_mass(int s) const
+    requires(F.species)
+  {
+    return species_w_[s];
+  }
+
+  /// Raw flat velocity array (n * stride doubles; padding entries stay 0).
+  FlatArray& velocity_data() { return v_; }
+  const FlatArray& velocity_data() const { return v_; }
+  PositionArray& position_data()
+    requires(F.positions)
+  {
+    return x_;
+  }
+  const PositionArray& position_data() const
+    requires(F.positions)
+  {
+    return x_;
+  }
+
+  /// Bytes of per-particle storage (capacity of all arrays divided by n).
+  double bytes_per_particle() const {
+    if (n_ == 0) return 0.0;
+    std::size_t b = v_.capacity() * sizeof(double);
+    if constexpr (F.positions) b += x_.capacity() * sizeof(double);
+    if constexpr (F.masses) b += w_.capacity() * sizeof(double);
+    if constexpr (F.radii) b += r_.capacity() * sizeof(double);
+    if constexpr (F.species) b += s_.capacity();
+    return static_cast<double>(b) / static_cast<double>(n_);
+  }
+
+ private:
+  static void check_mass(double m) {
+    if (!(m > 0.0) || std::isnan(m))
+      throw InvalidInput("mass must be > 0 (infinity allowed), got " + std::to_string(m));
+  }
+
+  std::size_t n_ = 0;
+  FlatArray v_;
+  [[no_unique_address]] PositionArray x_;
+  [[no_unique_address]] MassArray w_;
+  [[no_unique_address]] RadiusArray r_;
+  [[no_unique_address]] SpeciesArray s_;
+  [[no_unique_address]] SpeciesTable species_w_;
+};
+
+}  // namespace hypergas

@@ -1,0 +1,76 @@
+// Compile-time proof that absent particle fields cost nothing (include/hypergas/particles.hpp).
+#include <catch2/catch.hpp>
+
+#include <type_traits>
+
+#include "hypergas/particles.hpp"
+
+using namespace hypergas;
+
+namespace {
+constexpr Features velocity_only{};
+constexpr Features with_positions{.positions = true};
+constexpr Features everything{.positions = true, .masses = true, .radii = true, .species = true};
+
+template <int D, Features F>
+concept HasPosition = requires(Particles<D, F> p) { p.position(0); };
+template <int D, Features F>
+concept HasSetMass = requires(Particles<D, F> p) { p.set_mass(0, 1.0); };
+template <int D, Features F>
+concept HasSpecies = requires(Particles<D, F> p) { p.species(0); };
+}  // namespace
+
+// A velocity-space, single-mass scene stores one size and one vector: nothing else.
+using Plain3 = Particles<3, velocity_only>;
+static_assert(std::is_empty_v<Plain3::PositionArray>);
+static_assert(std::is_empty_v<Plain3::MassArray>);
+static_assert(std::is_empty_v<Plain3::RadiusArray>);
+static_assert(std::is_empty_v<Plain3::SpeciesArray>);
+static_assert(std::is_empty_v<Plain3::SpeciesTable>);
+static_assert(sizeof(Plain3) == sizeof(std::size_t) + sizeof(Plain3::FlatArray));
+static_assert(sizeof(Particles<6, velocity_only>) == sizeof(Plain3));
+// Each requested field adds exactly its container.
+static_assert(sizeof(Particles<3, with_positions>) == sizeof(Plain3) + sizeof(Plain3::FlatArray));
+static_assert(!std::is_empty_v<Particles<3, everything>::MassArray>);
+// Absent fields have no accessors: code that would use them does not compile.
+static_assert(!HasPosition<3, velocity_only>);
+static_assert(HasPosition<3, with_positions>);
+static_assert(!HasSetMass<3, velocity_only>);
+static_assert(HasSetMass<3, everything>);
+static_assert(!HasSpecies<2, with_positions>);
+static_assert(Plain3::stride == 4 && Particles<6>::stride == 8 && Particles<1>::stride == 1);
+
+TEST_CASE("equal-mass 3D velocity storage uses 32 bytes per particle", "[particles]") {
+  Plain3 p(1000);
+  REQUIRE(p.bytes_per_particle() == 32.0);
+  REQUIRE(p.inv_mass(17) == 1.0);
+  Particles<3, with_positions> q(1000);
+  REQUIRE(q.bytes_per_particle() == 64.0);
+}
+
+TEST_CASE("fields read back what was written", "[particles]") {
+  Particles<2, everything> p(3);
+  p.velocity(1) = Vec<2>(1.0, -2.0);
+  p.position(2) = Vec<2>(0.5, 0.25);
+  p.set_mass(0, 4.0);
+  p.set_radius(1, 0.75);
+  p.set_species(2, 1);
+  REQUIRE(p.velocity(1) == Vec<2>(1.0, -2.0));
+  REQUIRE(p.velocity(0) == Vec<2>::Zero());
+  REQUIRE(p.position(2) == Vec<2>(0.5, 0.25));
+  REQUIRE(p.inv_mass(0) == 0.25);
+  REQUIRE(p.radius(1) == 0.75);
+  REQUIRE(p.species(2) == 1);
+  p.set_mass(1, std::numeric_limits<double>::infinity());
+  REQUIRE(p.inv_mass(1) == 0.0);
+  REQUIRE_THROWS_AS(p.set_mass(0, -1.0), InvalidInput);
+  REQUIRE_THROWS_AS(p.set_mass(0, 0.0), InvalidInput);
+  REQUIRE_THROWS_AS(p.set_mass(0, std::nan("")), InvalidInput);
+  REQUIRE_THROWS_AS(p.set_species(0, max_species), InvalidInput);
+
+  Particles<3, Features{.species = true}> s(4);
+  s.set_species_mass(1, 10.0);
+  s.set_species(3, 1);
+  REQUIRE(s.inv_mass(3) == 0.1);
+  REQUIRE(s.inv_mass(0) == 1.0);
+}

@@ -64,8 +64,7 @@ inline void collide_unchecked(V1&& v1, V2&& v2, double w1, double w2, const Vec<
 template <int D>
 inline void check_normal(const Vec<D>& n) {
   const double nn = n.squaredNorm();
-  if (!n.allFinite() || !std::isfinite(nn))
-    throw InvalidInput("collision normal is not finite");
+  if (!n.allFinite() || !std::isfinite(nn)) throw InvalidInput("collision normal is not finite");
   if (nn == 0.0) throw InvalidInput("collision normal is zero (coincident centres?)");
   if (std::abs(nn - 1.0) > normal_tolerance)
     throw InvalidInput("collision normal is not unit length: |n|^2 = " + std::to_string(nn));

@@ -12,7 +12,9 @@ inline double unit_ball_volume(int d) {
 }
 
 /// Surface area of the unit sphere S^(D-1): D times the unit-ball volume.
-inline double unit_sphere_area(int d) { return d * unit_ball_volume(d); }
+inline double unit_sphere_area(int d) {
+  return d * unit_ball_volume(d);
+}
 
 /// Volume of a ball of diameter sigma in D dimensions.
 inline double ball_volume(int d, double sigma) {

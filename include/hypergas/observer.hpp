@@ -17,16 +17,16 @@ namespace hypergas {
 /// A read-only view of the particles at one instant. Arrays are valid only during the
 /// observer call. Velocity of particle i, component k: velocities[i * stride + k].
 struct Snapshot {
-  int dim = 0;                      ///< D
-  std::size_t n = 0;                ///< number of particles
-  int stride = 0;                   ///< doubles per particle in velocities / positions
-  double time = 0.0;                ///< engine time (DSMC: mean collision times; EDMD: sigma sqrt(m/kT))
+  int dim = 0;        ///< D
+  std::size_t n = 0;  ///< number of particles
+  int stride = 0;     ///< doubles per particle in velocities / positions
+  double time = 0.0;  ///< engine time (DSMC: mean collision times; EDMD: sigma sqrt(m/kT))
   double collisions_per_particle = 0.0;  ///< 2 * collisions / n so far
-  std::uint64_t collisions = 0;     ///< total accepted collisions so far
+  std::uint64_t collisions = 0;          ///< total accepted collisions so far
   const double* velocities = nullptr;
-  const double* positions = nullptr;  ///< unwrapped positions, or nullptr (velocity space)
-  const double* inv_mass = nullptr;   ///< per-particle inverse mass, or nullptr
-  const std::uint8_t* species = nullptr;  ///< per-particle species, or nullptr (one species)
+  const double* positions = nullptr;         ///< unwrapped positions, or nullptr (velocity space)
+  const double* inv_mass = nullptr;          ///< per-particle inverse mass, or nullptr
+  const std::uint8_t* species = nullptr;     ///< per-particle species, or nullptr (one species)
   const double* species_inv_mass = nullptr;  ///< inverse mass per species (with `species`)
   int n_species = 1;
 

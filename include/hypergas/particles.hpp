@@ -44,7 +44,9 @@ using Field = std::conditional_t<Present, T, Absent<Tag>>;
 
 /// Doubles per particle in a flat vector array: D rounded up to a power of two for D = 3,
 /// 5, 6 (32- and 64-byte records stay inside one cache line when the array is aligned).
-constexpr int padded_stride(int d) { return d == 3 ? 4 : (d == 5 || d == 6) ? 8 : d; }
+constexpr int padded_stride(int d) {
+  return d == 3 ? 4 : (d == 5 || d == 6) ? 8 : d;
+}
 
 template <class T>
 using AlignedVector = std::vector<T, Eigen::aligned_allocator<T>>;
@@ -53,7 +55,7 @@ using AlignedVector = std::vector<T, Eigen::aligned_allocator<T>>;
 /// Particle storage for `n` particles in D dimensions with optional fields `F`.
 /// Units are those of the engine that owns it (see the engines' docs).
 template <int D, Features F = Features{}>
-  requires Dimension<D>
+requires Dimension<D>
 class Particles {
  public:
   static constexpr int dim = D;
@@ -94,22 +96,18 @@ class Particles {
   ConstVecMap velocity(std::size_t i) const { return ConstVecMap(v_.data() + i * stride); }
 
   /// Position of particle i (only in scenes with positions).
-  VecMap position(std::size_t i)
-    requires(F.positions)
-  {
-    return VecMap(x_.data() + i * stride);
-  }
-  ConstVecMap position(std::size_t i) const
-    requires(F.positions)
-  {
+  VecMap position(std::size_t i) requires(F.positions) { return VecMap(x_.data() + i * stride); }
+  ConstVecMap position(std::size_t i) const requires(F.positions) {
     return ConstVecMap(x_.data() + i * stride);
   }
 
   /// Inverse mass of particle i (1/mass; 0 for an infinite mass). Unit mass when the scene
   /// has neither masses nor species: a constant the compiler folds away.
   double inv_mass(std::size_t i) const {
-    if constexpr (F.masses) return w_[i];
-    else if constexpr (F.species) return species_w_[s_[i]];
+    if constexpr (F.masses)
+      return w_[i];
+    else if constexpr (F.species)
+      return species_w_[s_[i]];
     else {
       (void)i;
       return 1.0;
@@ -119,65 +117,37 @@ class Particles {
   double mass(std::size_t i) const { return 1.0 / inv_mass(i); }
 
   /// Sets the mass of particle i; throws InvalidInput unless m > 0 (infinity allowed).
-  void set_mass(std::size_t i, double m)
-    requires(F.masses)
-  {
+  void set_mass(std::size_t i, double m) requires(F.masses) {
     check_mass(m);
     w_[i] = 1.0 / m;
   }
 
   /// Radius of particle i (only in scenes with radii).
-  double radius(std::size_t i) const
-    requires(F.radii)
-  {
-    return r_[i];
-  }
-  void set_radius(std::size_t i, double r)
-    requires(F.radii)
-  {
+  double radius(std::size_t i) const requires(F.radii) { return r_[i]; }
+  void set_radius(std::size_t i, double r) requires(F.radii) {
     if (!(std::isfinite(r) && r > 0.0)) throw InvalidInput("radius must be finite and > 0");
     r_[i] = r;
   }
 
   /// Species index of particle i (only in scenes with species).
-  int species(std::size_t i) const
-    requires(F.species)
-  {
-    return s_[i];
-  }
-  void set_species(std::size_t i, int s)
-    requires(F.species)
-  {
+  int species(std::size_t i) const requires(F.species) { return s_[i]; }
+  void set_species(std::size_t i, int s) requires(F.species) {
     if (s < 0 || s >= max_species) throw InvalidInput("species index out of range");
     s_[i] = static_cast<std::uint8_t>(s);
   }
   /// Mass of every particle of species s.
-  void set_species_mass(int s, double m)
-    requires(F.species)
-  {
+  void set_species_mass(int s, double m) requires(F.species) {
     if (s < 0 || s >= max_species) throw InvalidInput("species index out of range");
     check_mass(m);
     species_w_[s] = 1.0 / m;
   }
-  double species_inv_mass(int s) const
-    requires(F.species)
-  {
-    return species_w_[s];
-  }
+  double species_inv_mass(int s) const requires(F.species) { return species_w_[s]; }
 
   /// Raw flat velocity array (n * stride doubles; padding entries stay 0).
   FlatArray& velocity_data() { return v_; }
   const FlatArray& velocity_data() const { return v_; }
-  PositionArray& position_data()
-    requires(F.positions)
-  {
-    return x_;
-  }
-  const PositionArray& position_data() const
-    requires(F.positions)
-  {
-    return x_;
-  }
+  PositionArray& position_data() requires(F.positions) { return x_; }
+  const PositionArray& position_data() const requires(F.positions) { return x_; }
 
   /// Bytes of per-particle storage (capacity of all arrays divided by n).
   double bytes_per_particle() const {

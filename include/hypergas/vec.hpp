@@ -28,7 +28,8 @@ template <class F>
 constexpr void for_each_dim(F&& f) {
   [&]<int... Ds>(std::integer_sequence<int, Ds...>) {
     (f(DimTag<Ds + 1>{}), ...);
-  }(std::make_integer_sequence<int, max_dim>{});
+  }
+  (std::make_integer_sequence<int, max_dim>{});
 }
 
 }  // namespace hypergas

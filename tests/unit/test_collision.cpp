@@ -25,7 +25,9 @@ long double energy(const Vec<D>& v1, const Vec<D>& v2, double m1, double m2) {
 }
 
 // Random mass with log10(m) uniform in [-6, 6], so m1/m2 spans 1e-12..1e12.
-double random_mass(Rng& rng) { return std::pow(10.0, -6.0 + 12.0 * rng.uniform()); }
+double random_mass(Rng& rng) {
+  return std::pow(10.0, -6.0 + 12.0 * rng.uniform());
+}
 }  // namespace
 
 TEMPLATE_TEST_CASE_SIG("kernel conserves momentum and energy for mass ratios 1e-12..1e12",

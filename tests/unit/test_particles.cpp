@@ -13,11 +13,17 @@ constexpr Features with_positions{.positions = true};
 constexpr Features everything{.positions = true, .masses = true, .radii = true, .species = true};
 
 template <int D, Features F>
-concept HasPosition = requires(Particles<D, F> p) { p.position(0); };
+concept HasPosition = requires(Particles<D, F> p) {
+  p.position(0);
+};
 template <int D, Features F>
-concept HasSetMass = requires(Particles<D, F> p) { p.set_mass(0, 1.0); };
+concept HasSetMass = requires(Particles<D, F> p) {
+  p.set_mass(0, 1.0);
+};
 template <int D, Features F>
-concept HasSpecies = requires(Particles<D, F> p) { p.species(0); };
+concept HasSpecies = requires(Particles<D, F> p) {
+  p.species(0);
+};
 }  // namespace
 
 // A velocity-space, single-mass scene stores one size and one vector: nothing else.

@@ -28,7 +28,8 @@ double ks_pvalue(std::vector<double> x, const std::function<double(double)>& cdf
   }
   const double lambda = (std::sqrt(n) + 0.12 + 0.11 / std::sqrt(n)) * d;
   double q = 0.0;
-  for (int k = 1; k <= 100; ++k) q += 2.0 * ((k % 2) ? 1.0 : -1.0) * std::exp(-2.0 * k * k * lambda * lambda);
+  for (int k = 1; k <= 100; ++k)
+    q += 2.0 * ((k % 2) ? 1.0 : -1.0) * std::exp(-2.0 * k * k * lambda * lambda);
   return std::clamp(q, 0.0, 1.0);
 }
 constexpr int n_samples = 200000;
@@ -59,16 +60,20 @@ TEMPLATE_TEST_CASE_SIG("unit vectors: unit length, zero mean, covariance I/D", "
   for (int i = 0; i < D; ++i) {
     REQUIRE(std::abs(mean[i]) < 5 * sd_mean);
     for (int j = 0; j < D; ++j) {
-      if (i != j) REQUIRE(std::abs(cov(i, j)) < 5 * sd_off);
-      else if (D == 1) REQUIRE(cov(i, i) == 1.0);
-      else REQUIRE(std::abs(cov(i, i) - 1.0 / D) < 5 * std::sqrt(var_diag / n_samples));
+      if (i != j)
+        REQUIRE(std::abs(cov(i, j)) < 5 * sd_off);
+      else if (D == 1)
+        REQUIRE(cov(i, i) == 1.0);
+      else
+        REQUIRE(std::abs(cov(i, i) - 1.0 / D) < 5 * std::sqrt(var_diag / n_samples));
     }
   }
   // Goodness of fit of one component: (n_x + 1)/2 ~ Beta((D-1)/2, (D-1)/2) for D >= 2.
   // KS p-value must exceed 1e-4 (false-failure probability 1e-4).
   if constexpr (D >= 2) {
     const double a = 0.5 * (D - 1);
-    const double p = ks_pvalue(first, [a](double x) { return gsl_cdf_beta_P(0.5 * (x + 1.0), a, a); });
+    const double p =
+        ks_pvalue(first, [a](double x) { return gsl_cdf_beta_P(0.5 * (x + 1.0), a, a); });
     INFO("KS p-value " << p);
     REQUIRE(p > 1e-4);
   } else {
@@ -98,7 +103,8 @@ TEMPLATE_TEST_CASE_SIG("hard-sphere normal: cos(theta) density ~ cos(theta) on t
   } else {
     // CDF of t = g_hat.n: F(t) = 1 - (1 - t^2)^((D-1)/2) (derivation in sampling.hpp).
     // KS p-value > 1e-4: false-failure probability 1e-4.
-    const double p = ks_pvalue(t, [](double x) { return 1.0 - std::pow(1.0 - x * x, 0.5 * (D - 1)); });
+    const double p =
+        ks_pvalue(t, [](double x) { return 1.0 - std::pow(1.0 - x * x, 0.5 * (D - 1)); });
     INFO("KS p-value " << p);
     REQUIRE(p > 1e-4);
     // The tangential part is isotropic: its mean vanishes. Each component has variance

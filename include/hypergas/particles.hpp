@@ -146,6 +146,12 @@ class Particles {
   /// Raw flat velocity array (n * stride doubles; padding entries stay 0).
   FlatArray& velocity_data() { return v_; }
   const FlatArray& velocity_data() const { return v_; }
+  /// Raw species indices, one byte per particle (only in scenes with species).
+  const SpeciesArray& species_data() const
+    requires(F.species)
+  {
+    return s_;
+  }
   PositionArray& position_data() requires(F.positions) { return x_; }
   const PositionArray& position_data() const requires(F.positions) { return x_; }
 

@@ -1,0 +1,46 @@
+// hypergas/analysis/statistics.hpp -- distances from Maxwell–Boltzmann and goodness-of-fit tests.
+//
+// All distances compare bin probabilities: the histogram's fractions p_i = count_i / total
+// (underflow and overflow are two more bins) against the reference's exact bin
+// probabilities P_i = cdf(hi_i) - cdf(lo_i). Both distances are biased upward by sampling
+// noise: for N samples and B bins, E[L1] ~ sum_i sqrt(2 P_i / (pi N)) and E[KL] ~ (B-1)/(2N).
+#pragma once
+
+#include <vector>
+
+#include "hypergas/analysis/histogram.hpp"
+#include "hypergas/analysis/maxwell.hpp"
+
+namespace hypergas::analysis {
+
+/// A test statistic with its degrees of freedom and p-value (probability, under the
+/// reference, of a statistic at least this large).
+struct TestResult {
+  double statistic = 0.0;
+  double dof = 0.0;  ///< degrees of freedom (chi-square), or sample size (KS)
+  double p_value = 1.0;
+};
+
+/// L1 distance sum_i |p_i - P_i| (dimensionless, 0..2; twice the total-variation distance).
+double l1_distance(const Histogram& h, const MaxwellReference& ref);
+
+/// Kullback–Leibler divergence sum_i p_i ln(p_i / P_i) of the histogram from the reference
+/// (nats, >= 0; bins with p_i = 0 contribute 0).
+double kl_divergence(const Histogram& h, const MaxwellReference& ref);
+
+/// Pearson chi-square test of the counts against N P_i. Neighbouring bins are merged until
+/// each group expects >= 5 counts; dof = groups - 1 - fitted_parameters (use 1 when kT
+/// came from the same sample). p from gsl_cdf_chisq_Q.
+TestResult chi_square_test(const Histogram& h, const MaxwellReference& ref,
+                           int fitted_parameters = 0);
+
+/// Two-sided one-sample Kolmogorov–Smirnov test of `sample` against ref.cdf: statistic
+/// D_n = sup |F_n - F|, p from the asymptotic Kolmogorov distribution with Stephens' (1970)
+/// finite-n correction (accurate to ~1% in p for n >= 35). With kT estimated from the same
+/// sample the test is conservative (p too large; Lilliefors 1967).
+TestResult ks_test(std::vector<double> sample, const MaxwellReference& ref);
+
+/// Kolmogorov distribution upper tail Q(lambda) = 2 sum_k (-1)^(k-1) exp(-2 k^2 lambda^2).
+double kolmogorov_q(double lambda);
+
+}  // namespace hypergas::analysis

@@ -1,0 +1,83 @@
+// Histogram: a thin owner of a gsl_histogram plus underflow / overflow counts.
+#include "hypergas/analysis/histogram.hpp"
+
+#include <gsl/gsl_histogram.h>
+
+#include <cmath>
+#include <string>
+
+#include "hypergas/error.hpp"
+
+namespace hypergas::analysis {
+
+struct Histogram::Impl {
+  gsl_histogram* h = nullptr;
+  double under = 0.0, over = 0.0;
+  Impl() = default;
+  Impl(const Impl& o) : h(gsl_histogram_clone(o.h)), under(o.under), over(o.over) {}
+  ~Impl() {
+    if (h) gsl_histogram_free(h);
+  }
+  Impl& operator=(const Impl&) = delete;
+};
+
+Histogram::Histogram(double lo, double hi, std::size_t bins) : impl_(std::make_unique<Impl>()) {
+  if (!(std::isfinite(lo) && std::isfinite(hi) && lo < hi))
+    throw InvalidInput("Histogram: need finite lo < hi, got [" + std::to_string(lo) + ", " +
+                       std::to_string(hi) + ")");
+  if (bins < 1) throw InvalidInput("Histogram: need at least one bin");
+  impl_->h = gsl_histogram_alloc(bins);
+  if (!impl_->h) throw std::bad_alloc();
+  gsl_histogram_set_ranges_uniform(impl_->h, lo, hi);
+}
+
+Histogram::~Histogram() = default;
+Histogram::Histogram(const Histogram& other) : impl_(std::make_unique<Impl>(*other.impl_)) {}
+Histogram& Histogram::operator=(const Histogram& other) {
+  if (this != &other) impl_ = std::make_unique<Impl>(*other.impl_);
+  return *this;
+}
+Histogram::Histogram(Histogram&&) noexcept = default;
+Histogram& Histogram::operator=(Histogram&&) noexcept = default;
+
+void Histogram::add(double x) {
+  if (!std::isfinite(x)) throw InvalidInput("Histogram::add: non-finite value");
+  gsl_histogram* h = impl_->h;
+  if (x < h->range[0]) {
+    impl_->under += 1.0;
+  } else if (x >= h->range[h->n]) {
+    impl_->over += 1.0;
+  } else {
+    gsl_histogram_increment(h, x);
+  }
+}
+
+void Histogram::add(const std::vector<double>& xs) {
+  for (double x : xs) add(x);
+}
+
+std::size_t Histogram::bins() const { return impl_->h->n; }
+double Histogram::lower(std::size_t i) const { return impl_->h->range[i]; }
+double Histogram::upper(std::size_t i) const { return impl_->h->range[i + 1]; }
+double Histogram::count(std::size_t i) const { return impl_->h->bin[i]; }
+double Histogram::underflow() const { return impl_->under; }
+double Histogram::overflow() const { return impl_->over; }
+double Histogram::total() const { return gsl_histogram_sum(impl_->h) + impl_->under + impl_->over; }
+
+double Histogram::density(std::size_t i) const {
+  const double t = total();
+  return t > 0.0 ? count(i) / (t * (upper(i) - lower(i))) : 0.0;
+}
+
+Histogram make_histogram(const std::vector<double>& xs, const MaxwellReference& ref,
+                         std::size_t bins) {
+  ref.validate();
+  constexpr double tail = 1e-7;
+  const double hi = ref.quantile(1.0 - tail);
+  const double lo = ref.quantity == Quantity::component ? ref.quantile(tail) : 0.0;
+  Histogram h(lo, hi, bins);
+  h.add(xs);
+  return h;
+}
+
+}  // namespace hypergas::analysis

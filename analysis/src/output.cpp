@@ -86,7 +86,11 @@ void write_file_atomic(const std::string& path, const std::function<void(std::os
   write(text);
   if (!text) throw InvalidInput("cannot write '" + path + "': formatting failed");
 
-  std::string tmp = (folder / ("." + target.filename().string() + ".tmp.XXXXXX")).string();
+  // Hidden temporary next to the target (same file system, so rename is atomic).
+  std::string tmp_name(1, '.');
+  tmp_name += target.filename().string();
+  tmp_name += ".tmp.XXXXXX";
+  std::string tmp = (folder / tmp_name).string();
   const int fd = ::mkstemp(tmp.data());
   if (fd < 0)
     throw InvalidInput("cannot write '" + path + "': cannot create a file in folder '" +

@@ -1,0 +1,143 @@
+// Atomic CSV / JSON output (analysis/output.hpp) and the files of MomentsRecorder
+// (DESIGN.md section 5). Deterministic.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "hypergas/analysis/moments_recorder.hpp"
+#include "hypergas/analysis/output.hpp"
+#include "hypergas/error.hpp"
+#include "test_analysis_support.hpp"
+
+using namespace hypergas;
+using namespace hypergas::analysis;
+namespace fs = std::filesystem;
+
+namespace {
+// A fresh empty folder under the system temporary folder, removed at scope exit.
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string p = (fs::temp_directory_path() / "hypergas_analysis_XXXXXX").string();
+    REQUIRE(::mkdtemp(p.data()) != nullptr);
+    path = p;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::permissions(path, fs::perms::owner_all, ec);
+    fs::remove_all(path, ec);
+  }
+  std::size_t entries() const {
+    return static_cast<std::size_t>(std::distance(fs::directory_iterator(path), fs::directory_iterator{}));
+  }
+};
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+}  // namespace
+
+TEST_CASE("CSV is written atomically with its header and leaves no temporary file", "[analysis]") {
+  TempDir dir;
+  const fs::path f = dir.path / "a.csv";
+  write_csv(f.string(), {"lag", "vacf"}, {{0, 1.5}, {1, 0.1}, {2, NAN}});
+  CHECK(read(f) == "lag,vacf\n0,1.5\n1,0.10000000000000001\n2,nan\n");
+  CHECK(dir.entries() == 1);
+  // Overwriting replaces the file as a whole.
+  write_csv(f.string(), {"x"}, {{3}});
+  CHECK(read(f) == "x\n3\n");
+  CHECK(dir.entries() == 1);
+}
+
+TEST_CASE("A failing write leaves the old file and no partial file", "[analysis]") {
+  TempDir dir;
+  const fs::path f = dir.path / "keep.csv";
+  write_csv(f.string(), {"x"}, {{1}});
+  // The writer fails half way: the old content survives, nothing else is left.
+  CHECK_THROWS_AS(write_file_atomic(f.string(),
+                                    [](std::ostream& os) {
+                                      os << "half a file";
+                                      throw std::runtime_error("disk on fire");
+                                    }),
+                  std::runtime_error);
+  CHECK(read(f) == "x\n1\n");
+  CHECK(dir.entries() == 1);
+  // A row of the wrong length is refused before anything is written.
+  CHECK_THROWS_AS(write_csv((dir.path / "bad.csv").string(), {"a", "b"}, {{1}}), InvalidInput);
+  CHECK(dir.entries() == 1);
+}
+
+TEST_CASE("A missing or unwritable folder is an InvalidInput naming the path", "[analysis]") {
+  TempDir dir;
+  const std::string missing = (dir.path / "no" / "such" / "x.csv").string();
+  CHECK_THROWS_WITH(write_csv(missing, {"x"}, {{1}}), Catch::Contains(missing) && Catch::Contains("does not exist"));
+  CHECK_THROWS_AS(write_csv(missing, {"x"}, {{1}}), InvalidInput);
+  if (::geteuid() != 0) {  // root may write anywhere
+    fs::permissions(dir.path, fs::perms::owner_read | fs::perms::owner_exec);
+    const std::string ro = (dir.path / "x.csv").string();
+    CHECK_THROWS_AS(write_json(ro, {{"a", 1.0}}), InvalidInput);
+    CHECK_THROWS_WITH(write_json(ro, {{"a", 1.0}}), Catch::Contains(ro));
+    fs::permissions(dir.path, fs::perms::owner_all);
+    CHECK(dir.entries() == 0);
+  }
+}
+
+TEST_CASE("JSON summary: one object, keys in order, NaN as null", "[analysis]") {
+  const JsonObject o = {{"dim", std::int64_t{3}},
+                        {"engine", std::string("dsmc \"x\"")},
+                        {"wall_s", 0.25},
+                        {"drift", NAN},
+                        {"ok", true}};
+  CHECK(to_json(o) == R"({"dim": 3, "engine": "dsmc \"x\"", "wall_s": 0.25, "drift": null, "ok": true})");
+  TempDir dir;
+  write_json((dir.path / "summary.json").string(), o);
+  CHECK(read(dir.path / "summary.json") == to_json(o) + "\n");
+}
+
+TEST_CASE("MomentsRecorder writes moments.csv and speed_histogram.csv per DESIGN.md", "[analysis]") {
+  test::OwnedState st(3, 20000);
+  Rng rng(51);
+  MomentsRecorder rec(40);
+  CHECK_THROWS_AS(rec.write_moments_csv("/tmp/never.csv"), InvalidInput);
+  for (int k = 0; k < 3; ++k) {
+    test::fill_maxwell(st, rng, 2.0);
+    Snapshot s = st.snapshot();
+    s.time = 0.5 * k;
+    s.collisions_per_particle = 1.0 * k;
+    rec.observe(s);
+  }
+  TempDir dir;
+  rec.write_moments_csv((dir.path / "moments.csv").string());
+  rec.write_speed_histogram_csv((dir.path / "speed_histogram.csv").string());
+  const std::string m = read(dir.path / "moments.csv");
+  CHECK(m.rfind("time,collisions_per_particle,m2,m4,kurtosis_x,", 0) == 0);
+  CHECK(std::count(m.begin(), m.end(), '\n') == 4);
+  const std::string h = read(dir.path / "speed_histogram.csv");
+  CHECK(h.rfind("lo,hi,count,density,maxwell_density\n", 0) == 0);
+  CHECK(std::count(h.begin(), h.end(), '\n') == 41);
+  // The recorded values are those of an MB gas at kT = 2 (loose sanity bounds; the
+  // statistics are tested in test_analysis_moments / _statistics): m2 = 6, kurtosis 3.
+  CHECK(rec.column("m2")[2] == Approx(6.0).epsilon(0.05));
+  CHECK(rec.column("kurtosis_x")[2] == Approx(3.0).epsilon(0.1));
+  CHECK(rec.column("kT")[2] == Approx(2.0).epsilon(0.05));
+  CHECK(rec.column("time")[1] == 0.5);
+  CHECK_THROWS_AS(rec.column("nope"), InvalidInput);
+  // A mixture adds per-species temperature columns; changing the species count is refused.
+  MomentsRecorder mix;
+  st.species.assign(st.size(), 0);
+  for (std::size_t i = 0; i < st.size(); i += 2) st.species[i] = 1;
+  st.species_inv_mass = {1.0, 0.5};
+  mix.observe(st.snapshot());
+  CHECK(mix.columns().back() == "kT_1");
+  st.species.clear();
+  CHECK_THROWS_AS(mix.observe(st.snapshot()), InvalidInput);
+}

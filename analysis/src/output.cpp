@@ -80,7 +80,7 @@ void write_file_atomic(const std::string& path, const std::function<void(std::os
   std::error_code ec;
   if (!fs::is_directory(folder, ec))
     throw InvalidInput("cannot write '" + path + "': folder '" + folder.string() +
-                       "' does not exist");
+                       "' does not exist or is not a folder");
   // Produce the whole text first: a throwing writer leaves nothing on disk.
   std::ostringstream text;
   write(text);

@@ -81,7 +81,15 @@ TEST_CASE("A missing or unwritable folder is an InvalidInput naming the path", "
   const std::string missing = (dir.path / "no" / "such" / "x.csv").string();
   CHECK_THROWS_WITH(write_csv(missing, {"x"}, {{1}}), Catch::Contains(missing) && Catch::Contains("does not exist"));
   CHECK_THROWS_AS(write_csv(missing, {"x"}, {{1}}), InvalidInput);
-  if (::geteuid() != 0) {  // root may write anywhere
+  // /proc is a folder nobody, root included, can create files in.
+  CHECK_THROWS_WITH(write_csv("/proc/hypergas_x.csv", {"x"}, {{1}}),
+                    Catch::Contains("/proc/hypergas_x.csv") && Catch::Contains("cannot create"));
+  // A destination that is a folder: the rename fails and the temporary is removed.
+  fs::create_directory(dir.path / "sub");
+  CHECK_THROWS_AS(write_csv((dir.path / "sub").string(), {"x"}, {{1}}), InvalidInput);
+  CHECK(dir.entries() == 1);
+  fs::remove(dir.path / "sub");
+  if (::geteuid() != 0) {  // a read-only folder: root may write anyway, so only as a user
     fs::permissions(dir.path, fs::perms::owner_read | fs::perms::owner_exec);
     const std::string ro = (dir.path / "x.csv").string();
     CHECK_THROWS_AS(write_json(ro, {{"a", 1.0}}), InvalidInput);

@@ -1,0 +1,343 @@
+// hypergas/dsmc/engine.hpp -- the spatially homogeneous Boltzmann gas (DSMC, Kac process).
+//
+// Public API (what the command line calls):
+//
+//   dsmc::Config cfg;                      // n, model, vhs_exponent, scheme, dt, seed, init,
+//                                          // initial (kT, kT_species, fraction, mass_ratio)
+//   dsmc::Engine<3, dsmc::HardSpheres> e(cfg);          // samples the initial state
+//   e.run_until(10.0, &observer, 0.1);     // observe at t = 0, 0.1, ..., 10 (mean coll. times)
+//   e.time(); e.collisions(); e.candidates(); e.particles(); e.bytes_per_particle();
+//
+//   Model is HardSpheres, MaxwellMolecules or VariableHardSpheres (dsmc/models.hpp;
+//   dsmc::parse_model maps a name to ModelKind, the caller maps that to the type). Two
+//   species: Engine<D, Model, Features{.species = true}> (masses from the species table,
+//   set by the initial state from cfg.initial.mass_ratio and .fraction).
+//
+// The process. N particles carry velocities only (no positions are stored or compiled
+// in). Each unordered pair collides at rate c |g|^a / (N - 1) (g = relative velocity,
+// a = model exponent, c = 1 / <|g|^a>_eq from dsmc/time_unit.hpp, so that at equilibrium
+// every particle collides once per unit time). The exact scheme simulates this Kac master
+// equation without time-step error by thinning: candidates form a Poisson process of rate
+// Lambda = N c G^a / 2, where G >= |g| for every pair at every moment (dsmc/majorant.hpp);
+// a candidate is a uniformly chosen pair, accepted with probability (|g|/G)^a. Over an
+// epoch [t, t_end] with constant G the number of candidates is Poisson(Lambda (t_end - t))
+// and their times are uniform order statistics, so no exponential waiting time is drawn per
+// candidate. When an accepted collision raises a speed above the bound, the epoch stops at
+// that candidate; its time is the k-th of M uniform order statistics, t + (t_end - t)
+// Beta(k, M - k + 1) (exact: the marks do not depend on the times), the bound is raised
+// and a new epoch starts there (the Poisson process after a stopping time is fresh).
+// Maxwell molecules need no majorant: every candidate collides.
+//
+// Bird's no-time-counter scheme (scheme = ntc) instead takes steps of dt: each step draws
+// floor(Lambda dt + U) candidates with G frozen at the start of the step and accepts with
+// min(1, (|g|/G)^a). Its step errors: the candidate count carries no Poisson noise, and pairs
+// faster than the frozen G (created within the step) are under-sampled until the next step.
+//
+// 1D: with equal masses a collision only keeps or swaps the two velocities (the only
+// solutions of momentum and energy conservation), so the velocity distribution never
+// relaxes; 1D scenes therefore use two species with different masses.
+//
+// Speed: candidate pairs are drawn 32 ahead and their velocities prefetched (random access
+// to N = 1e6 velocities is cache-miss bound); hard spheres accept by comparing squares, so
+// a rejected candidate costs no square root; equal-mass scenes compile the mass weights to
+// 1/2. Observers are called every `every` time units, never per collision.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <type_traits>
+#include <utility>
+
+#include "hypergas/dsmc/config.hpp"
+#include "hypergas/dsmc/majorant.hpp"
+#include "hypergas/dsmc/models.hpp"
+#include "hypergas/dsmc/time_unit.hpp"
+#include "hypergas/initial_state.hpp"
+#include "hypergas/observer.hpp"
+#include "hypergas/particles.hpp"
+#include "hypergas/rng.hpp"
+
+namespace hypergas::dsmc {
+
+/// The DSMC engine for dimension D, collision model `Model`, particle features F (Features{}
+/// or Features{.species = true}). Time in equilibrium mean collision times.
+template <int D, class Model, Features F = Features{}>
+  requires Dimension<D> && CollisionModel<Model> && (!F.positions) && (!F.masses) && (!F.radii)
+class Engine {
+ public:
+  using ParticlesT = Particles<D, F>;
+  static constexpr int stride = ParticlesT::stride;
+
+  /// Samples cfg.n particles in the initial state cfg.init. Throws InvalidInput on a bad
+  /// configuration (e.g. a two-species state requested without species support is simply
+  /// one species; use Features{.species = true}).
+  explicit Engine(const Config& cfg) : Engine(cfg, initial_particles(cfg)) {}
+
+  /// Starts from the given particles (velocities in units where the species-0 mass is 1);
+  /// cfg.n and cfg.init are ignored. Total momentum should be zero (see time_unit.hpp).
+  Engine(const Config& cfg, ParticlesT particles)
+      : cfg_(cfg), p_(std::move(particles)), model_(make_model(cfg)),
+        rng_(Rng(cfg.seed).split(2)) {
+    validate(cfg_);
+    n_ = static_cast<std::uint32_t>(p_.size());
+    if (p_.size() < 2 || p_.size() > 0xffffffffULL)
+      throw InvalidInput("DSMC: the number of particles must be in [2, 2^32 - 1]");
+    c_ = dsmc::rate_constant(p_, model_.exponent());
+    retune(true);
+    double* v = p_.velocity_data().data();
+    for (int k = 0; k < ring; ++k) {
+      const auto [i, j] = draw_pair();
+      ring_i_[k] = i;
+      ring_j_[k] = j;
+      prefetch(v, i, j);
+    }
+  }
+
+  /// Advances the process to time t (mean collision times; nothing happens if t <= time()).
+  /// With an observer, calls obs->observe at every multiple of `every` in [time(), t]
+  /// (once per instant; the initial state is observed at time 0). Throws InvalidInput if
+  /// obs is set and every is not > 0.
+  void run_until(double t, Observer* obs = nullptr, double every = 0.0) {
+    if (obs && !(every > 0.0 && std::isfinite(every)))
+      throw InvalidInput("DSMC: observation interval must be finite and > 0");
+    if (!std::isfinite(t)) throw InvalidInput("DSMC: end time must be finite");
+    if (!obs) {
+      advance_to(t);
+      return;
+    }
+    auto k = static_cast<std::uint64_t>(std::max(0.0, std::ceil(time_ / every - 1e-9)));
+    for (;; ++k) {
+      double tk = static_cast<double>(k) * every;
+      if (tk > t) {
+        if (tk - t > 1e-9 * every) break;
+        tk = t;
+      }
+      advance_to(tk);
+      if (observed_at_ != time_) {
+        observe(*obs);
+        observed_at_ = time_;
+      }
+    }
+    advance_to(t);
+  }
+
+  /// Current time (mean collision times).
+  double time() const { return time_; }
+  /// Accepted collisions so far.
+  std::uint64_t collisions() const { return collisions_; }
+  /// Candidate pairs tested so far (acceptance ratio = collisions / candidates).
+  std::uint64_t candidates() const { return candidates_; }
+  /// 2 collisions / N: equals time() on average at equilibrium.
+  double collisions_per_particle() const { return 2.0 * static_cast<double>(collisions_) / n_; }
+  /// The particles (velocities in units with species-0 mass 1).
+  const ParticlesT& particles() const { return p_; }
+  /// Bytes of per-particle storage (the engine itself stores nothing per particle).
+  double bytes_per_particle() const { return p_.bytes_per_particle(); }
+  /// Rate constant c: pair rate c |g|^a / (N - 1) per mean collision time.
+  double rate_constant() const { return c_; }
+  /// Current majorant bound G >= |g| (velocity units).
+  double bound() const { return bound_.bound(); }
+  const Config& config() const { return cfg_; }
+  const Model& model() const { return model_; }
+
+ private:
+  static constexpr int ring = 32;  // candidate pairs drawn ahead (prefetch distance)
+  static constexpr bool equal_masses = !F.species;
+
+  static ParticlesT initial_particles(const Config& cfg) {
+    validate(cfg);
+    ParticlesT p(cfg.n);
+    Rng r = Rng(cfg.seed).split(1);
+    initialize_velocities(p, cfg.init, r, cfg.initial);
+    return p;
+  }
+  static Model make_model(const Config& cfg) {
+    if constexpr (std::is_same_v<Model, VariableHardSpheres>) return Model(cfg.vhs_exponent);
+    else return Model{};
+  }
+
+  /// Unbiased integer in [0, range) from 32 random bits (Lemire's multiply-shift with
+  /// rejection); redraws fresh bits on rejection.
+  std::uint32_t bounded32(std::uint32_t x, std::uint32_t range) {
+    std::uint64_t m = std::uint64_t(x) * range;
+    auto l = static_cast<std::uint32_t>(m);
+    if (l < range) {
+      const std::uint32_t t = (0u - range) % range;
+      while (l < t) {
+        x = static_cast<std::uint32_t>(rng_() >> 32);
+        m = std::uint64_t(x) * range;
+        l = static_cast<std::uint32_t>(m);
+      }
+    }
+    return static_cast<std::uint32_t>(m >> 32);
+  }
+  /// A uniformly chosen ordered pair of distinct particles.
+  std::pair<std::uint32_t, std::uint32_t> draw_pair() {
+    const std::uint64_t r = rng_();
+    const std::uint32_t i = bounded32(static_cast<std::uint32_t>(r >> 32), n_);
+    std::uint32_t j = bounded32(static_cast<std::uint32_t>(r), n_ - 1);
+    j += (j >= i);
+    return {i, j};
+  }
+  static void prefetch(const double* v, std::uint32_t i, std::uint32_t j) {
+    __builtin_prefetch(v + std::size_t(i) * stride, 1);
+    __builtin_prefetch(v + std::size_t(j) * stride, 1);
+  }
+
+  /// Resets the majorant from an exact scan (when `force` or after enough candidates).
+  void retune(bool force) {
+    if constexpr (!Model::needs_majorant) {
+      lambda_ = 0.5 * n_ * c_;
+      return;
+    }
+    if (force || since_scan_ >= 8ull * n_) {
+      bound_.rescan(p_);
+      since_scan_ = 0;
+    }
+    set_lambda();
+  }
+  void set_lambda() {
+    const double ga = model_.exponent() == 1.0 ? bound_.bound()
+                                               : std::pow(bound_.bound(), model_.exponent());
+    lambda_ = 0.5 * n_ * c_ * ga;
+  }
+
+  /// Processes up to m candidates. Exact: stops after an accepted collision that leaves a
+  /// speed above the bound and returns the number processed (raise_to_ holds the new
+  /// maximum squared speed). NTC: never stops; records the largest such speed.
+  template <bool Exact>
+  std::uint64_t process(std::uint64_t m) {
+    double* v = p_.velocity_data().data();
+    const double G = bound_.bound();
+    using Map = Eigen::Map<Vec<D>>;
+    for (std::uint64_t k = 0; k < m; ++k) {
+      const std::uint32_t i = ring_i_[rpos_], j = ring_j_[rpos_];
+      {
+        const auto [a, b] = draw_pair();
+        ring_i_[rpos_] = a;
+        ring_j_[rpos_] = b;
+        prefetch(v, a, b);
+        rpos_ = (rpos_ + 1) & (ring - 1);
+      }
+      Map vi(v + std::size_t(i) * stride), vj(v + std::size_t(j) * stride);
+      const Vec<D> g = vi - vj;
+      const double g2 = g.squaredNorm();
+      ++candidates_;
+      if constexpr (Model::needs_majorant) {
+        if (!model_.accept(g2, rng_.uniform(), G)) continue;
+      }
+      const double gn = std::sqrt(g2);
+      const Vec<D> delta = Model::template deflect<D>(g, gn, rng_) - g;
+      if constexpr (equal_masses && D == 1) {
+        // Equal masses in 1D: g' = +-g, i.e. keep or swap, done exactly (no round-off).
+        if (delta[0] != 0.0) std::swap(vi[0], vj[0]);
+      } else if constexpr (equal_masses) {
+        vi += 0.5 * delta;
+        vj -= 0.5 * delta;
+      } else {
+        const double w1 = p_.inv_mass(i), w2 = p_.inv_mass(j);
+        const double ws = w1 + w2;
+        vi += (w1 / ws) * delta;
+        vj -= (w2 / ws) * delta;
+      }
+      ++collisions_;
+      if constexpr (Model::needs_majorant) {
+        const double s2 = std::max(vi.squaredNorm(), vj.squaredNorm());
+        if (bound_.exceeded_by(s2)) {
+          raise_to_ = std::max(raise_to_, s2);
+          if constexpr (Exact) return k + 1;
+        }
+      }
+    }
+    return m;
+  }
+
+  /// Advances to t_end with the configured scheme.
+  void advance_to(double t_end) {
+    if (cfg_.scheme == Scheme::exact) advance_exact(t_end);
+    else advance_ntc(t_end);
+  }
+
+  void advance_exact(double t_end) {
+    while (time_ < t_end) {
+      retune(false);
+      double h = t_end - time_;
+      const double hmax = 2.0 * n_ / lambda_;  // epochs of ~2N candidates
+      const bool capped = h > hmax;
+      if (capped) h = hmax;
+      std::poisson_distribution<std::uint64_t> pois(lambda_ * h);
+      const std::uint64_t m = pois(rng_);
+      const std::uint64_t k = process<true>(m);
+      since_scan_ += k;
+      if (k == m) {
+        time_ = capped ? time_ + h : t_end;
+      } else {
+        // k-th of m uniform order statistics on [time_, time_ + h].
+        std::gamma_distribution<double> ga(static_cast<double>(k)),
+            gb(static_cast<double>(m - k + 1));
+        const double x = ga(rng_), y = gb(rng_);
+        time_ = std::min(time_ + h * (x / (x + y)), t_end);
+        bound_.set(raise_to_);
+        raise_to_ = 0.0;
+        set_lambda();
+      }
+    }
+  }
+
+  void advance_ntc(double t_end) {
+    while (time_ < t_end) {
+      retune(false);
+      double h = cfg_.dt;
+      const bool last = h >= t_end - time_;
+      if (last) h = t_end - time_;
+      const auto m = static_cast<std::uint64_t>(std::floor(lambda_ * h + rng_.uniform()));
+      process<false>(m);
+      since_scan_ += m;
+      if (raise_to_ > 0.0) {  // the bound catches up only at the end of the step
+        bound_.set(raise_to_);
+        raise_to_ = 0.0;
+        set_lambda();
+      }
+      time_ = last ? t_end : time_ + h;
+    }
+  }
+
+  void observe(Observer& obs) {
+    Snapshot s = make_snapshot(p_);
+    s.time = time_;
+    s.collisions = collisions_;
+    s.collisions_per_particle = collisions_per_particle();
+    if constexpr (F.species) {
+      int ns = 1;
+      for (int k = 0; k < max_species; ++k) species_w_[k] = p_.species_inv_mass(k);
+      for (std::size_t i = 0; i < p_.size(); ++i) ns = std::max(ns, p_.species(i) + 1);
+      s.species = p_.species_data().data();
+      s.species_inv_mass = species_w_.data();
+      s.n_species = ns;
+    }
+    obs.observe(s);
+  }
+
+  Config cfg_;
+  ParticlesT p_;
+  Model model_;
+  Rng rng_;
+  std::uint32_t n_ = 0;
+  double c_ = 0.0;       // rate constant
+  double lambda_ = 0.0;  // candidate rate N c G^a / 2 (per mean collision time)
+  SpeedBound bound_;
+  double raise_to_ = 0.0;  // pending new maximum squared speed
+  double time_ = 0.0;
+  double observed_at_ = -1.0;
+  std::uint64_t collisions_ = 0, candidates_ = 0, since_scan_ = 0;
+  std::array<std::uint32_t, ring> ring_i_{}, ring_j_{};
+  unsigned rpos_ = 0;
+  std::array<double, max_species> species_w_{};
+};
+
+}  // namespace hypergas::dsmc

@@ -1,0 +1,101 @@
+// hypergas/dsmc/models.hpp -- collision models: compile-time pieces of the DSMC engine.
+//
+// A model fixes (i) the pair collision rate q(g) = c |g|^a / (N - 1) per unordered pair
+// (c is the time-unit constant of dsmc/time_unit.hpp) and (ii) the law of the scattered
+// relative velocity (dsmc/scattering.hpp):
+//   HardSpheres          a = 1, specular reflection at a hard-sphere normal;
+//   MaxwellMolecules     a = 0, isotropic scattering (VSS with alpha = 1): every candidate
+//                        collides, no majorant and no rejection are compiled in;
+//   VariableHardSpheres  0 <= a <= 1 (runtime), isotropic scattering (Bird's VHS).
+// `accept(g2, u, bound)` decides a candidate pair with |g|^2 = g2 against the majorant
+// bound G >= |g| for a uniform u in [0, 1): accepted with probability (|g|/G)^a. Hard
+// spheres compare squares, so rejected candidates cost no square root.
+#pragma once
+
+#include <cmath>
+#include <string>
+#include <string_view>
+
+#include "hypergas/dsmc/scattering.hpp"
+#include "hypergas/error.hpp"
+
+namespace hypergas::dsmc {
+
+/// The collision models by name, for the command line.
+enum class ModelKind { hs, maxwell, vhs };
+
+/// The model named "hs", "maxwell" or "vhs"; throws InvalidInput otherwise.
+inline ModelKind parse_model(std::string_view name) {
+  if (name == "hs") return ModelKind::hs;
+  if (name == "maxwell") return ModelKind::maxwell;
+  if (name == "vhs") return ModelKind::vhs;
+  std::string msg = "unknown collision model '";
+  msg.append(name).append("' (expected hs, maxwell or vhs)");
+  throw InvalidInput(msg);
+}
+
+/// The command-line name of a model kind.
+inline std::string_view to_string(ModelKind m) {
+  return m == ModelKind::hs ? "hs" : m == ModelKind::maxwell ? "maxwell" : "vhs";
+}
+
+/// Hard spheres: rate proportional to |g|, specular reflection.
+struct HardSpheres {
+  static constexpr bool needs_majorant = true;
+  static constexpr ModelKind kind = ModelKind::hs;
+  /// The exponent a of the rate |g|^a.
+  static constexpr double exponent() { return 1.0; }
+  /// Accept with probability |g| / G: (u G)^2 < |g|^2.
+  static bool accept(double g2, double u, double bound) { return u * u * bound * bound < g2; }
+  /// New relative velocity for relative velocity g with |g| = gnorm > 0.
+  template <int D>
+  static Vec<D> deflect(const Vec<D>& g, double gnorm, Rng& rng) {
+    return hard_sphere_deflection<D>(g, gnorm, rng);
+  }
+};
+
+/// Maxwell molecules: rate independent of g, isotropic scattering.
+struct MaxwellMolecules {
+  static constexpr bool needs_majorant = false;
+  static constexpr ModelKind kind = ModelKind::maxwell;
+  static constexpr double exponent() { return 0.0; }
+  static bool accept(double, double, double) { return true; }
+  template <int D>
+  static Vec<D> deflect(const Vec<D>&, double gnorm, Rng& rng) {
+    return isotropic_deflection<D>(gnorm, rng);
+  }
+};
+
+/// Variable hard spheres: rate proportional to |g|^a, 0 <= a <= 1, isotropic scattering.
+class VariableHardSpheres {
+ public:
+  static constexpr bool needs_majorant = true;
+  static constexpr ModelKind kind = ModelKind::vhs;
+  /// Throws InvalidInput unless 0 <= a <= 1.
+  explicit VariableHardSpheres(double a = 0.5) : a_(a), half_a_(0.5 * a) {
+    if (!(a >= 0.0 && a <= 1.0)) throw InvalidInput("VHS exponent must be in [0, 1]");
+  }
+  double exponent() const { return a_; }
+  /// Accept with probability (|g| / G)^a = (g2 / G^2)^(a/2).
+  bool accept(double g2, double u, double bound) const {
+    return u < std::pow(g2 / (bound * bound), half_a_);
+  }
+  template <int D>
+  static Vec<D> deflect(const Vec<D>&, double gnorm, Rng& rng) {
+    return isotropic_deflection<D>(gnorm, rng);
+  }
+
+ private:
+  double a_;
+  double half_a_;
+};
+
+/// True for the three model types above.
+template <class M>
+concept CollisionModel = requires(const M m, double x) {
+  { M::needs_majorant } -> std::convertible_to<bool>;
+  { m.exponent() } -> std::convertible_to<double>;
+  { m.accept(x, x, x) } -> std::convertible_to<bool>;
+};
+
+}  // namespace hypergas::dsmc

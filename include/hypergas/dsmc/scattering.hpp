@@ -1,0 +1,113 @@
+// hypergas/dsmc/scattering.hpp -- post-collision relative velocities, fast paths per D.
+//
+// An elastic binary collision keeps the centre-of-mass velocity and the relative speed |g|
+// and turns the relative velocity g = v1 - v2 into g'. The collision models differ only in
+// the law of the direction of g':
+//   isotropic  g' = |g| sigma, sigma uniform on S^(D-1) (Maxwell molecules, VHS);
+//   hard       g' = g - 2 (g.n) n, with the line of centres n distributed with density
+//   spheres    proportional to (g_hat . n) on the hemisphere g_hat . n > 0 (specular
+//              reflection at uniformly distributed impact parameters).
+// Hard-sphere normals are drawn with Malley's projection, valid in every D: a point p
+// uniform in the unit (D-1)-ball of the plane orthogonal to g_hat, lifted to the sphere,
+// n = p + sqrt(1 - |p|^2) g_hat, has density proportional to g_hat . n (the Jacobian of the
+// projection). Writing p = sqrt(s) omega (omega uniform on S^(D-2), s = U^(2/(D-1))) in a frame
+// whose last axis is e_L, the frame is carried onto g_hat by one Householder reflection.
+// In D = 3 hard-sphere scattering is isotropic in the centre-of-mass frame (cos chi =
+// 2 s - 1 with s uniform), so the cheaper isotropic sampler is used there.
+#pragma once
+
+#include <cmath>
+
+#include "hypergas/rng.hpp"
+#include "hypergas/sampling.hpp"
+#include "hypergas/vec.hpp"
+
+namespace hypergas::dsmc {
+
+/// Uniform unit vector on S^(D-1); rejection methods without logarithms for D <= 4
+/// (Marsaglia 1972, "Choosing a point from the surface of a sphere", Ann. Math. Stat. 43).
+template <int D>
+inline Vec<D> isotropic_direction(Rng& rng) {
+  if constexpr (D == 1) {
+    return Vec<D>::Constant((rng() >> 63) ? 1.0 : -1.0);
+  } else if constexpr (D == 2) {
+    // (x, y) uniform in the unit disk; its doubled angle is uniform: (x^2-y^2, 2xy)/(x^2+y^2).
+    for (;;) {
+      const double x = 2.0 * rng.uniform() - 1.0, y = 2.0 * rng.uniform() - 1.0;
+      const double s = x * x + y * y;
+      if (s < 1.0 && s > 1e-200) return Vec<D>((x * x - y * y) / s, 2.0 * x * y / s);
+    }
+  } else if constexpr (D == 3) {
+    for (;;) {
+      const double x = 2.0 * rng.uniform() - 1.0, y = 2.0 * rng.uniform() - 1.0;
+      const double s = x * x + y * y;
+      if (s < 1.0) {
+        const double f = 2.0 * std::sqrt(1.0 - s);
+        return Vec<D>(x * f, y * f, 1.0 - 2.0 * s);
+      }
+    }
+  } else if constexpr (D == 4) {
+    double x1, y1, s1, x2, y2, s2;
+    do {
+      x1 = 2.0 * rng.uniform() - 1.0;
+      y1 = 2.0 * rng.uniform() - 1.0;
+      s1 = x1 * x1 + y1 * y1;
+    } while (s1 >= 1.0);
+    do {
+      x2 = 2.0 * rng.uniform() - 1.0;
+      y2 = 2.0 * rng.uniform() - 1.0;
+      s2 = x2 * x2 + y2 * y2;
+    } while (s2 >= 1.0 || s2 == 0.0);
+    const double f = std::sqrt((1.0 - s1) / s2);
+    Vec<D> v;
+    v << x1, y1, x2 * f, y2 * f;
+    return v;
+  } else {
+    return unit_vector<D>(rng);  // normalised Gaussian vector
+  }
+}
+
+/// Isotropic scattering: the new relative velocity |g| sigma, sigma uniform (any unit).
+template <int D>
+inline Vec<D> isotropic_deflection(double gnorm, Rng& rng) {
+  return gnorm * isotropic_direction<D>(rng);
+}
+
+/// Hard-sphere scattering: the new relative velocity g - 2 (g.n) n for the hard-sphere
+/// normal distribution around g (see the file comment). Precondition gnorm = |g| > 0.
+template <int D>
+inline Vec<D> hard_sphere_deflection(const Vec<D>& g, double gnorm, Rng& rng) {
+  if constexpr (D == 1) {
+    (void)gnorm;
+    (void)rng;
+    return -g;
+  } else if constexpr (D == 3) {
+    return isotropic_deflection<D>(gnorm, rng);
+  } else {
+    // s = 1 - t^2 ~ Beta((D-1)/2, 1) with t = g_hat . n.
+    const double u = rng.uniform_pos();
+    double s;
+    if constexpr (D == 2) s = u * u;
+    else if constexpr (D == 4) s = std::cbrt(u * u);
+    else if constexpr (D == 5) s = std::sqrt(u);
+    else s = std::pow(u, 2.0 / (D - 1));
+    const double t = std::sqrt(1.0 - s);
+    // y = e_L - 2 t m with m = (sqrt(s) omega, t): the deflected direction in the frame.
+    Vec<D> y;
+    const Vec<D - 1> omega = isotropic_direction<D - 1>(rng);
+    const double c = -2.0 * t * std::sqrt(s);
+    for (int k = 0; k < D - 1; ++k) y[k] = c * omega[k];
+    y[D - 1] = 1.0 - 2.0 * t * t;
+    // Householder reflection H = I - 2 u u^T/(u.u), u = e_L - sp g_hat, maps e_L to sp g_hat;
+    // the sign sp = -+1 is chosen so that u.u = 2 - 2 sp g_hat_L >= 2 (no cancellation).
+    // Q = sp H is orthogonal with Q e_L = g_hat, so g' = |g| Q y.
+    const Vec<D> gh = g / gnorm;
+    const double sp = gh[D - 1] >= 0.0 ? -1.0 : 1.0;
+    Vec<D> uh = -sp * gh;
+    uh[D - 1] += 1.0;
+    const Vec<D> hy = y - (2.0 * uh.dot(y) / uh.squaredNorm()) * uh;
+    return (sp * gnorm) * hy;
+  }
+}
+
+}  // namespace hypergas::dsmc

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "hypergas/analysis/output.hpp"
 #include "hypergas/error.hpp"
 
 namespace hypergas::analysis {
@@ -78,6 +79,21 @@ Histogram make_histogram(const std::vector<double>& xs, const MaxwellReference& 
   Histogram h(lo, hi, bins);
   h.add(xs);
   return h;
+}
+
+
+void write_histogram_csv(const std::string& path, const Histogram& h, const MaxwellReference& ref) {
+  ref.validate();
+  std::vector<std::vector<double>> rows;
+  rows.reserve(h.bins());
+  for (std::size_t i = 0; i < h.bins(); ++i) {
+    const double lo = h.lower(i), hi = h.upper(i);
+    // Exact bin probability over the width: the reference density averaged over the bin.
+    const double p = ref.cdf(lo) < 0.5 ? ref.cdf(hi) - ref.cdf(lo)
+                                       : ref.upper_tail(lo) - ref.upper_tail(hi);
+    rows.push_back({lo, hi, h.count(i), h.density(i), p / (hi - lo)});
+  }
+  write_csv(path, {"lo", "hi", "count", "density", "maxwell_density"}, rows);
 }
 
 }  // namespace hypergas::analysis

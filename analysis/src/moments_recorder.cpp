@@ -57,12 +57,22 @@ void MomentsRecorder::observe(const Snapshot& s) {
                              kl_divergence(h, ref),
                              ks_test(speeds, ref).p_value,
                              chi2_p};
-  if (ns > 1)
-    for (int k = 0; k < ns; ++k) row.push_back(count(s, k) > 0 ? temperature(s, k) : NAN);
+  last_histograms_.clear();
+  last_refs_.clear();
+  last_histograms_.push_back(std::move(h));
+  last_refs_.push_back(ref);
+  if (ns > 1) {
+    for (int k = 0; k < ns; ++k) {
+      const bool present = count(s, k) > 0;
+      row.push_back(present ? temperature(s, k) : NAN);
+      // Species histograms: each species' own speeds against MB at the common kT.
+      const MaxwellReference rk = present ? reference(s, Quantity::speed, k) : ref;
+      last_histograms_.push_back(
+          make_histogram(present ? values(s, Quantity::speed, k) : std::vector<double>{}, rk, bins_));
+      last_refs_.push_back(rk);
+    }
+  }
   rows_.push_back(std::move(row));
-  last_histogram_ = std::move(h);
-  last_kT_ = ref.kT;
-  last_mass_ = ref.mass;
 }
 
 std::vector<double> MomentsRecorder::column(const std::string& name) const {
@@ -80,18 +90,12 @@ void MomentsRecorder::write_moments_csv(const std::string& path) const {
   write_csv(path, columns_, rows_);
 }
 
-void MomentsRecorder::write_speed_histogram_csv(const std::string& path) const {
-  if (!last_histogram_) throw InvalidInput("MomentsRecorder: nothing observed, no " + path);
-  const Histogram& h = *last_histogram_;
-  const MaxwellReference ref{Quantity::speed, dim_, last_kT_, last_mass_};
-  std::vector<std::vector<double>> rows;
-  for (std::size_t i = 0; i < h.bins(); ++i) {
-    // Reference density averaged over the bin (exact bin probability / width).
-    const double p = ref.cdf(h.upper(i)) - ref.cdf(h.lower(i));
-    rows.push_back({h.lower(i), h.upper(i), h.count(i), h.density(i),
-                    p / (h.upper(i) - h.lower(i))});
-  }
-  write_csv(path, {"lo", "hi", "count", "density", "maxwell_density"}, rows);
+void MomentsRecorder::write_speed_histogram_csv(const std::string& path, int species) const {
+  if (last_histograms_.empty()) throw InvalidInput("MomentsRecorder: nothing observed, no " + path);
+  const auto k = static_cast<std::size_t>(species + 1);
+  if (species < -1 || k >= last_histograms_.size())
+    throw InvalidInput("MomentsRecorder: no species " + std::to_string(species) + " for " + path);
+  write_histogram_csv(path, last_histograms_[k], last_refs_[k]);
 }
 
 }  // namespace hypergas::analysis

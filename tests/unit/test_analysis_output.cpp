@@ -4,6 +4,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -132,6 +134,26 @@ TEST_CASE("MomentsRecorder writes moments.csv and speed_histogram.csv per DESIGN
   const std::string h = read(dir.path / "speed_histogram.csv");
   CHECK(h.rfind("lo,hi,count,density,maxwell_density\n", 0) == 0);
   CHECK(std::count(h.begin(), h.end(), '\n') == 41);
+  // Columns are consistent: counts sum to n less the (rare) overflow, both densities
+  // integrate to ~1 (the range covers MB up to tail 1e-7), density = count / (n width).
+  {
+    std::istringstream in(h);
+    std::string line;
+    std::getline(in, line);
+    double counts = 0, hist_mass = 0, mb_mass = 0;
+    while (std::getline(in, line)) {
+      double lo, hi, c, dens, mb;
+      REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf", &lo, &hi, &c, &dens, &mb) == 5);
+      CHECK(dens == Approx(c / (20000.0 * (hi - lo))).epsilon(1e-12));
+      counts += c;
+      hist_mass += dens * (hi - lo);
+      mb_mass += mb * (hi - lo);
+    }
+    CHECK(counts <= 20000.0);
+    CHECK(counts >= 19999.0);
+    CHECK(hist_mass == Approx(counts / 20000.0).epsilon(1e-12));
+    CHECK(mb_mass == Approx(1.0).margin(1e-6));
+  }
   // The recorded values are those of an MB gas at kT = 2 (loose sanity bounds; the
   // statistics are tested in test_analysis_moments / _statistics): m2 = 6, kurtosis 3.
   CHECK(rec.column("m2")[2] == Approx(6.0).epsilon(0.05));
@@ -146,6 +168,9 @@ TEST_CASE("MomentsRecorder writes moments.csv and speed_histogram.csv per DESIGN
   st.species_inv_mass = {1.0, 0.5};
   mix.observe(st.snapshot());
   CHECK(mix.columns().back() == "kT_1");
+  mix.write_speed_histogram_csv((dir.path / "h1.csv").string(), 1);
+  CHECK(read(dir.path / "h1.csv").rfind("lo,hi,count,density,maxwell_density\n", 0) == 0);
+  CHECK_THROWS_AS(mix.write_speed_histogram_csv((dir.path / "h2.csv").string(), 2), InvalidInput);
   st.species.clear();
   CHECK_THROWS_AS(mix.observe(st.snapshot()), InvalidInput);
 }

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "hypergas/analysis/maxwell.hpp"
@@ -47,5 +48,10 @@ class Histogram {
 /// (speed and energy start at 0), filled with `xs`.
 Histogram make_histogram(const std::vector<double>& xs, const MaxwellReference& ref,
                          std::size_t bins = 50);
+
+/// Writes `h` as CSV `lo,hi,count,density,maxwell_density` (atomically): bin edges (units
+/// of x), counts, the histogram density and the reference's mean density over each bin
+/// (both 1 / units of x).
+void write_histogram_csv(const std::string& path, const Histogram& h, const MaxwellReference& ref);
 
 }  // namespace hypergas::analysis

@@ -13,16 +13,16 @@
 //   ks_p_speed               KS p-value of the speeds against MB at kT (conservative)
 //   chi2_p_speed             chi-square p-value of the speed histogram (1 fitted parameter)
 //   kT_0, kT_1, ...          per-species temperature, energy units (mixtures only)
-// Pooled speeds are mass-weighted (see sample.hpp). The recorder keeps the speed histogram
-// of the last snapshot for speed_histogram.csv.
+// Pooled speeds are mass-weighted (see sample.hpp). The recorder keeps the speed histograms
+// of the last snapshot (pooled and, for mixtures, per species) for speed_histogram.csv.
 #pragma once
 
 #include <cstddef>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "hypergas/analysis/histogram.hpp"
+#include "hypergas/analysis/maxwell.hpp"
 #include "hypergas/observer.hpp"
 
 namespace hypergas::analysis {
@@ -46,16 +46,17 @@ class MomentsRecorder final : public Observer {
   /// Writes moments.csv (atomically). Throws InvalidInput if nothing was observed.
   void write_moments_csv(const std::string& path) const;
   /// Writes the last snapshot's speed histogram `lo,hi,count,density,maxwell_density`
-  /// (speed in velocity units, densities in 1/velocity; MB at that snapshot's kT).
-  void write_speed_histogram_csv(const std::string& path) const;
+  /// (speed in velocity units, densities in 1/velocity; MB at that snapshot's kT) of all
+  /// particles (species = -1, mass-weighted) or of one species (mixtures).
+  void write_speed_histogram_csv(const std::string& path, int species = -1) const;
 
  private:
   std::size_t bins_;
   int n_species_ = 0;
   std::vector<std::string> columns_;
   std::vector<std::vector<double>> rows_;
-  std::optional<Histogram> last_histogram_;
-  double last_kT_ = 0.0, last_mass_ = 1.0;
+  std::vector<Histogram> last_histograms_;  // pooled, then species 0, 1, ... (mixtures)
+  std::vector<MaxwellReference> last_refs_;
   int dim_ = 0;
 };
 

@@ -69,7 +69,11 @@ void initial_guess(const Data& d, double& a, double& k, double& c) {
     const double e = (y[i] - c) / a;
     if (!(e > 0.05)) continue;
     const double l = std::log(e);
-    sx += t[i]; sy += l; sxx += t[i] * t[i]; sxy += t[i] * l; m += 1;
+    sx += t[i];
+    sy += l;
+    sxx += t[i] * t[i];
+    sxy += t[i] * l;
+    m += 1;
   }
   const double den = m * sxx - sx * sx;
   k = (m >= 2 && den > 0) ? -(m * sxy - sx * sy) / den : 0.0;
@@ -139,7 +143,8 @@ RelaxationFit fit_relaxation(const std::vector<double>& t, const std::vector<dou
   gsl_vector_free(p);
   gsl_multifit_nlinear_free(w);
   if (status != GSL_SUCCESS || !std::isfinite(r.rate.value) || !std::isfinite(r.rate.error))
-    throw InvalidInput(std::string("fit_relaxation: the fit failed (") + gsl_strerror(status) + ")");
+    throw InvalidInput(std::string("fit_relaxation: the fit failed (") + gsl_strerror(status) +
+                       ")");
   return r;
 }
 

@@ -57,13 +57,27 @@ void Histogram::add(const std::vector<double>& xs) {
   for (double x : xs) add(x);
 }
 
-std::size_t Histogram::bins() const { return impl_->h->n; }
-double Histogram::lower(std::size_t i) const { return impl_->h->range[i]; }
-double Histogram::upper(std::size_t i) const { return impl_->h->range[i + 1]; }
-double Histogram::count(std::size_t i) const { return impl_->h->bin[i]; }
-double Histogram::underflow() const { return impl_->under; }
-double Histogram::overflow() const { return impl_->over; }
-double Histogram::total() const { return gsl_histogram_sum(impl_->h) + impl_->under + impl_->over; }
+std::size_t Histogram::bins() const {
+  return impl_->h->n;
+}
+double Histogram::lower(std::size_t i) const {
+  return impl_->h->range[i];
+}
+double Histogram::upper(std::size_t i) const {
+  return impl_->h->range[i + 1];
+}
+double Histogram::count(std::size_t i) const {
+  return impl_->h->bin[i];
+}
+double Histogram::underflow() const {
+  return impl_->under;
+}
+double Histogram::overflow() const {
+  return impl_->over;
+}
+double Histogram::total() const {
+  return gsl_histogram_sum(impl_->h) + impl_->under + impl_->over;
+}
 
 double Histogram::density(std::size_t i) const {
   const double t = total();
@@ -81,7 +95,6 @@ Histogram make_histogram(const std::vector<double>& xs, const MaxwellReference& 
   return h;
 }
 
-
 void write_histogram_csv(const std::string& path, const Histogram& h, const MaxwellReference& ref) {
   ref.validate();
   std::vector<std::vector<double>> rows;
@@ -89,8 +102,8 @@ void write_histogram_csv(const std::string& path, const Histogram& h, const Maxw
   for (std::size_t i = 0; i < h.bins(); ++i) {
     const double lo = h.lower(i), hi = h.upper(i);
     // Exact bin probability over the width: the reference density averaged over the bin.
-    const double p = ref.cdf(lo) < 0.5 ? ref.cdf(hi) - ref.cdf(lo)
-                                       : ref.upper_tail(lo) - ref.upper_tail(hi);
+    const double p =
+        ref.cdf(lo) < 0.5 ? ref.cdf(hi) - ref.cdf(lo) : ref.upper_tail(lo) - ref.upper_tail(hi);
     rows.push_back({lo, hi, h.count(i), h.density(i), p / (hi - lo)});
   }
   write_csv(path, {"lo", "hi", "count", "density", "maxwell_density"}, rows);

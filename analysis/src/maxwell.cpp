@@ -16,9 +16,12 @@ namespace hypergas::analysis {
 
 const char* to_string(Quantity q) {
   switch (q) {
-    case Quantity::speed: return "speed";
-    case Quantity::component: return "component";
-    case Quantity::energy: return "energy";
+    case Quantity::speed:
+      return "speed";
+    case Quantity::component:
+      return "component";
+    case Quantity::energy:
+      return "energy";
   }
   return "?";
 }
@@ -35,7 +38,9 @@ void MaxwellReference::validate() const {
 
 namespace {
 // Thermal velocity scale sqrt(kT/m).
-double scale(const MaxwellReference& r) { return std::sqrt(r.kT / r.mass); }
+double scale(const MaxwellReference& r) {
+  return std::sqrt(r.kT / r.mass);
+}
 }  // namespace
 
 double MaxwellReference::pdf(double x) const {
@@ -46,12 +51,14 @@ double MaxwellReference::pdf(double x) const {
       const double s = scale(*this), u = x / s;
       if (u == 0.0) return dim == 1 ? std::sqrt(2.0 / M_PI) / s : 0.0;
       // chi_D density: u^(D-1) exp(-u^2/2) / (2^(D/2-1) Gamma(D/2)), in logs (no overflow).
-      const double logp = (dim - 1) * std::log(u) - 0.5 * u * u - (half_d - 1.0) * M_LN2 -
-                          std::lgamma(half_d);
+      const double logp =
+          (dim - 1) * std::log(u) - 0.5 * u * u - (half_d - 1.0) * M_LN2 - std::lgamma(half_d);
       return std::exp(logp) / s;
     }
-    case Quantity::component: return gsl_ran_gaussian_pdf(x, scale(*this));
-    case Quantity::energy: return x < 0.0 ? 0.0 : gsl_ran_gamma_pdf(x, half_d, kT);
+    case Quantity::component:
+      return gsl_ran_gaussian_pdf(x, scale(*this));
+    case Quantity::energy:
+      return x < 0.0 ? 0.0 : gsl_ran_gamma_pdf(x, half_d, kT);
   }
   return 0.0;
 }
@@ -64,8 +71,10 @@ double MaxwellReference::cdf(double x) const {
       const double u = x / scale(*this);
       return gsl_cdf_chisq_P(u * u, dim);
     }
-    case Quantity::component: return gsl_cdf_gaussian_P(x, scale(*this));
-    case Quantity::energy: return x <= 0.0 ? 0.0 : gsl_cdf_gamma_P(x, 0.5 * dim, kT);
+    case Quantity::component:
+      return gsl_cdf_gaussian_P(x, scale(*this));
+    case Quantity::energy:
+      return x <= 0.0 ? 0.0 : gsl_cdf_gamma_P(x, 0.5 * dim, kT);
   }
   return 0.0;
 }
@@ -78,21 +87,25 @@ double MaxwellReference::upper_tail(double x) const {
       const double u = x / scale(*this);
       return gsl_cdf_chisq_Q(u * u, dim);
     }
-    case Quantity::component: return gsl_cdf_gaussian_Q(x, scale(*this));
-    case Quantity::energy: return x <= 0.0 ? 1.0 : gsl_cdf_gamma_Q(x, 0.5 * dim, kT);
+    case Quantity::component:
+      return gsl_cdf_gaussian_Q(x, scale(*this));
+    case Quantity::energy:
+      return x <= 0.0 ? 1.0 : gsl_cdf_gamma_Q(x, 0.5 * dim, kT);
   }
   return 0.0;
 }
 
 double MaxwellReference::quantile(double p) const {
   if (!(p > 0.0 && p < 1.0))
-    throw InvalidInput("MaxwellReference::quantile: p must be in (0, 1), got " +
-                       std::to_string(p));
+    throw InvalidInput("MaxwellReference::quantile: p must be in (0, 1), got " + std::to_string(p));
   detail::GslErrorGuard guard;
   switch (quantity) {
-    case Quantity::speed: return scale(*this) * std::sqrt(gsl_cdf_chisq_Pinv(p, dim));
-    case Quantity::component: return gsl_cdf_gaussian_Pinv(p, scale(*this));
-    case Quantity::energy: return gsl_cdf_gamma_Pinv(p, 0.5 * dim, kT);
+    case Quantity::speed:
+      return scale(*this) * std::sqrt(gsl_cdf_chisq_Pinv(p, dim));
+    case Quantity::component:
+      return gsl_cdf_gaussian_Pinv(p, scale(*this));
+    case Quantity::energy:
+      return gsl_cdf_gamma_Pinv(p, 0.5 * dim, kT);
   }
   return 0.0;
 }

@@ -23,7 +23,8 @@ Moments compute_moments(const Snapshot& s, int species) {
   validate(s);
   Moments m;
   m.n = count(s, species);
-  if (m.n < 2) throw InvalidInput("compute_moments: need at least 2 particles, got " + std::to_string(m.n));
+  if (m.n < 2)
+    throw InvalidInput("compute_moments: need at least 2 particles, got " + std::to_string(m.n));
   const double m_mean = mean_mass(s, species);
   // Power sums: raw |v|^2k (k = 1..3, and squares), mass-weighted |w|^4 and w_x^2, w_x^4, ...
   double s2 = 0, s4 = 0, s6 = 0, s8 = 0, s12 = 0;
@@ -37,11 +38,19 @@ Moments compute_moments(const Snapshot& s, int species) {
     const double inv_m = s.inverse_mass(i);
     const double f = 1.0 / (inv_m * m_mean);  // w = v sqrt(f)
     const double v4 = vv * vv, v6 = v4 * vv;
-    s2 += vv; s4 += v4; s6 += v6; s8 += v4 * v4; s12 += v6 * v6;
+    s2 += vv;
+    s4 += v4;
+    s6 += v6;
+    s8 += v4 * v4;
+    s12 += v6 * v6;
     const double ww4 = v4 * f * f;
-    w4 += ww4; w8 += ww4 * ww4;
+    w4 += ww4;
+    w8 += ww4 * ww4;
     const double xx = v[0] * v[0] * f;
-    x2 += xx; x4 += xx * xx; x6 += xx * xx * xx; x8 += xx * xx * xx * xx;
+    x2 += xx;
+    x4 += xx * xx;
+    x6 += xx * xx * xx;
+    x8 += xx * xx * xx * xx;
     twice_e += vv / inv_m;
   }
   const double n = static_cast<double>(m.n);
@@ -55,7 +64,8 @@ Moments compute_moments(const Snapshot& s, int species) {
   if (b > 0.0) {
     const double var_a = x8 / n - a * a, var_b = x4 / n - b * b, cov = x6 / n - a * b;
     const double var_k = (var_a / std::pow(b, 4) - 4.0 * a * cov / std::pow(b, 5) +
-                          4.0 * a * a * var_b / std::pow(b, 6)) / (n - 1.0);
+                          4.0 * a * a * var_b / std::pow(b, 6)) /
+                         (n - 1.0);
     m.kurtosis_x = {a / (b * b), std::sqrt(std::max(var_k, 0.0))};
   } else {
     m.kurtosis_x = {NAN, NAN};

@@ -24,10 +24,15 @@ void MomentsRecorder::observe(const Snapshot& s) {
   if (columns_.empty()) {
     n_species_ = ns;
     dim_ = s.dim;
-    columns_ = {"time",   "collisions_per_particle", "m2",       "m4",           "kurtosis_x",
-                "m6",     "m2_err",                  "m4_err",   "m6_err",       "kurtosis_x_err",
-                "m4_ratio", "m4_ratio_err",          "kT",       "l1_speed",     "kl_speed",
-                "ks_p_speed", "chi2_p_speed"};
+    columns_ = {"time",        "collisions_per_particle",
+                "m2",          "m4",
+                "kurtosis_x",  "m6",
+                "m2_err",      "m4_err",
+                "m6_err",      "kurtosis_x_err",
+                "m4_ratio",    "m4_ratio_err",
+                "kT",          "l1_speed",
+                "kl_speed",    "ks_p_speed",
+                "chi2_p_speed"};
     if (ns > 1)
       for (int k = 0; k < ns; ++k) columns_.push_back("kT_" + std::to_string(k));
   } else if (ns != n_species_ || s.dim != dim_) {
@@ -67,8 +72,8 @@ void MomentsRecorder::observe(const Snapshot& s) {
       row.push_back(present ? temperature(s, k) : NAN);
       // Species histograms: each species' own speeds against MB at the common kT.
       const MaxwellReference rk = present ? reference(s, Quantity::speed, k) : ref;
-      last_histograms_.push_back(
-          make_histogram(present ? values(s, Quantity::speed, k) : std::vector<double>{}, rk, bins_));
+      last_histograms_.push_back(make_histogram(
+          present ? values(s, Quantity::speed, k) : std::vector<double>{}, rk, bins_));
       last_refs_.push_back(rk);
     }
   }

@@ -18,7 +18,9 @@
 namespace hypergas::analysis {
 
 namespace {
-std::string errno_text(int e) { return std::strerror(e); }
+std::string errno_text(int e) {
+  return std::strerror(e);
+}
 
 // Writes all of `text` to fd; false on an error (errno set).
 bool write_all(int fd, const std::string& text) {
@@ -52,11 +54,21 @@ void put_json_string(std::ostream& os, const std::string& s) {
   os << '"';
   for (unsigned char ch : s) {
     switch (ch) {
-      case '"': os << "\\\""; break;
-      case '\\': os << "\\\\"; break;
-      case '\n': os << "\\n"; break;
-      case '\t': os << "\\t"; break;
-      case '\r': os << "\\r"; break;
+      case '"':
+        os << "\\\"";
+        break;
+      case '\\':
+        os << "\\\\";
+        break;
+      case '\n':
+        os << "\\n";
+        break;
+      case '\t':
+        os << "\\t";
+        break;
+      case '\r':
+        os << "\\r";
+        break;
       default:
         if (ch < 0x20) {
           char buf[8];
@@ -74,8 +86,7 @@ void put_json_string(std::ostream& os, const std::string& s) {
 void write_file_atomic(const std::string& path, const std::function<void(std::ostream&)>& write) {
   namespace fs = std::filesystem;
   const fs::path target(path);
-  if (target.filename().empty())
-    throw InvalidInput("cannot write '" + path + "': not a file name");
+  if (target.filename().empty()) throw InvalidInput("cannot write '" + path + "': not a file name");
   const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code ec;
   if (!fs::is_directory(folder, ec))
@@ -148,8 +159,10 @@ std::string to_json(const JsonObject& fields) {
           } else if constexpr (std::is_same_v<T, std::int64_t>) {
             os << v;
           } else if constexpr (std::is_same_v<T, double>) {
-            if (std::isfinite(v)) put_double(os, v);
-            else os << "null";
+            if (std::isfinite(v))
+              put_double(os, v);
+            else
+              os << "null";
           } else {
             put_json_string(os, v);
           }

@@ -21,7 +21,8 @@ double speed_sq(const Snapshot& s, std::size_t i) {
 }  // namespace
 
 void validate(const Snapshot& s) {
-  if (s.dim < 1) throw InvalidInput("snapshot: dimension must be >= 1, got " + std::to_string(s.dim));
+  if (s.dim < 1)
+    throw InvalidInput("snapshot: dimension must be >= 1, got " + std::to_string(s.dim));
   if (s.stride < s.dim)
     throw InvalidInput("snapshot: stride " + std::to_string(s.stride) + " < dimension " +
                        std::to_string(s.dim));
@@ -51,9 +52,8 @@ double mean_mass(const Snapshot& s, int species) {
     if (selected(s, i, species)) {
       const double w = s.inverse_mass(i);
       if (!(w > 0.0 && std::isfinite(w)))
-        throw InvalidInput("snapshot: particle " + std::to_string(i) +
-                           " has inverse mass " + std::to_string(w) +
-                           " (the analysis needs finite, positive masses)");
+        throw InvalidInput("snapshot: particle " + std::to_string(i) + " has inverse mass " +
+                           std::to_string(w) + " (the analysis needs finite, positive masses)");
       sum += 1.0 / w;
       ++c;
     }
@@ -84,11 +84,15 @@ std::vector<double> values(const Snapshot& s, Quantity q, int species) {
     // Pooled velocities are mass-weighted: v sqrt(m_i / m_mean) = v / sqrt(w m_mean).
     const double f = (species < 0 && q != Quantity::energy) ? 1.0 / std::sqrt(w * m_mean) : 1.0;
     switch (q) {
-      case Quantity::speed: out.push_back(f * std::sqrt(speed_sq(s, i))); break;
+      case Quantity::speed:
+        out.push_back(f * std::sqrt(speed_sq(s, i)));
+        break;
       case Quantity::component:
         out.push_back(f * s.velocities[i * static_cast<std::size_t>(s.stride)]);
         break;
-      case Quantity::energy: out.push_back(0.5 * speed_sq(s, i) / w); break;
+      case Quantity::energy:
+        out.push_back(0.5 * speed_sq(s, i) / w);
+        break;
     }
   }
   return out;

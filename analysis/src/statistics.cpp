@@ -32,8 +32,8 @@ BinPairs bin_pairs(const Histogram& h, const MaxwellReference& ref) {
     b.counts.push_back(h.count(i));
     // Difference of CDFs, or of upper tails on the right side where the CDF saturates.
     const double lo = h.lower(i), hi = h.upper(i);
-    const double p = ref.cdf(lo) < 0.5 ? ref.cdf(hi) - ref.cdf(lo)
-                                       : ref.upper_tail(lo) - ref.upper_tail(hi);
+    const double p =
+        ref.cdf(lo) < 0.5 ? ref.cdf(hi) - ref.cdf(lo) : ref.upper_tail(lo) - ref.upper_tail(hi);
     b.probs.push_back(std::max(p, 0.0));
   }
   b.counts.push_back(h.overflow());
@@ -45,7 +45,8 @@ BinPairs bin_pairs(const Histogram& h, const MaxwellReference& ref) {
 double l1_distance(const Histogram& h, const MaxwellReference& ref) {
   const BinPairs b = bin_pairs(h, ref);
   double d = 0.0;
-  for (std::size_t i = 0; i < b.counts.size(); ++i) d += std::abs(b.counts[i] / b.total - b.probs[i]);
+  for (std::size_t i = 0; i < b.counts.size(); ++i)
+    d += std::abs(b.counts[i] / b.total - b.probs[i]);
   return d;
 }
 
@@ -61,8 +62,7 @@ double kl_divergence(const Histogram& h, const MaxwellReference& ref) {
   return std::max(d, 0.0);
 }
 
-TestResult chi_square_test(const Histogram& h, const MaxwellReference& ref,
-                           int fitted_parameters) {
+TestResult chi_square_test(const Histogram& h, const MaxwellReference& ref, int fitted_parameters) {
   const BinPairs b = bin_pairs(h, ref);
   constexpr double min_expected = 5.0;
   std::vector<double> obs, expct;

@@ -84,8 +84,8 @@ void gather(const std::vector<double>& data, std::size_t frames, std::size_t cha
 }
 }  // namespace
 
-std::vector<double> vacf(const std::vector<double>& v, std::size_t frames, std::size_t n,
-                         int dim, std::size_t max_lag) {
+std::vector<double> vacf(const std::vector<double>& v, std::size_t frames, std::size_t n, int dim,
+                         std::size_t max_lag) {
   check_series(v, frames, n, dim, max_lag, "vacf");
   const std::size_t channels = n * static_cast<std::size_t>(dim);
   std::vector<double> acc(max_lag + 1, 0.0), x(frames);
@@ -99,8 +99,8 @@ std::vector<double> vacf(const std::vector<double>& v, std::size_t frames, std::
   return acc;
 }
 
-std::vector<double> vacf_direct(const std::vector<double>& v, std::size_t frames,
-                                std::size_t n, int dim, std::size_t max_lag) {
+std::vector<double> vacf_direct(const std::vector<double>& v, std::size_t frames, std::size_t n,
+                                int dim, std::size_t max_lag) {
   check_series(v, frames, n, dim, max_lag, "vacf_direct");
   const std::size_t channels = n * static_cast<std::size_t>(dim);
   std::vector<double> acc(max_lag + 1, 0.0);
@@ -113,8 +113,8 @@ std::vector<double> vacf_direct(const std::vector<double>& v, std::size_t frames
   return acc;
 }
 
-std::vector<double> msd(const std::vector<double>& r, std::size_t frames, std::size_t n,
-                        int dim, std::size_t max_lag) {
+std::vector<double> msd(const std::vector<double>& r, std::size_t frames, std::size_t n, int dim,
+                        std::size_t max_lag) {
   check_series(r, frames, n, dim, max_lag, "msd");
   // sum_t0 (x(t0+m) - x(t0))^2 = S(m) - 2 R(m) with S(m) = sum_{t<L-m} x(t)^2 +
   // sum_{t>=m} x(t)^2 (prefix sums) and R the autocorrelation sum. Each channel is shifted
@@ -157,8 +157,7 @@ std::vector<double> msd_direct(const std::vector<double>& r, std::size_t frames,
   return acc;
 }
 
-double green_kubo_diffusion(const std::vector<double>& c, double dt, int dim,
-                            std::size_t max_lag) {
+double green_kubo_diffusion(const std::vector<double>& c, double dt, int dim, std::size_t max_lag) {
   if (dim < 1 || !(dt > 0.0) || max_lag >= c.size())
     throw InvalidInput("green_kubo_diffusion: need dim >= 1, dt > 0 and max_lag < vacf size");
   double s = 0.5 * (c[0] + c[max_lag]);

@@ -103,8 +103,8 @@ TEST_CASE("MomentsRecorder + fit: a relaxation with a known rate", "[analysis]")
   }
   const RelaxationFit f = fit_relaxation(rec.column("time"), rec.column("m4_ratio"),
                                          rec.column("m4_ratio_err"), false, 1.0);
-  INFO("lambda " << lambda << " fit " << f.rate.value << " +- " << f.rate.error
-                 << " amplitude " << f.amplitude.value);
+  INFO("lambda " << lambda << " fit " << f.rate.value << " +- " << f.rate.error << " amplitude "
+                 << f.amplitude.value);
   CHECK(f.rate.value == Approx(lambda).epsilon(0.15));
   CHECK(f.amplitude.value == Approx(-0.24).epsilon(0.15));
   // The distances fall as the gas relaxes: the start fails KS, the end is near MB.

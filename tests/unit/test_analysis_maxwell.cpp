@@ -20,11 +20,15 @@ namespace {
 double integrate(const std::function<double(double)>& f, double lo) {
   gsl_integration_workspace* w = gsl_integration_workspace_alloc(1000);
   gsl_function g;
-  g.function = [](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); };
+  g.function = [](double x, void* p) {
+    return (*static_cast<const std::function<double(double)>*>(p))(x);
+  };
   g.params = const_cast<std::function<double(double)>*>(&f);
   double r = 0, err = 0;
-  if (std::isinf(lo)) gsl_integration_qagi(&g, 1e-13, 1e-11, 1000, w, &r, &err);
-  else gsl_integration_qagiu(&g, lo, 1e-13, 1e-11, 1000, w, &r, &err);
+  if (std::isinf(lo))
+    gsl_integration_qagi(&g, 1e-13, 1e-11, 1000, w, &r, &err);
+  else
+    gsl_integration_qagiu(&g, lo, 1e-13, 1e-11, 1000, w, &r, &err);
   gsl_integration_workspace_free(w);
   return r;
 }
@@ -60,12 +64,15 @@ TEST_CASE("MB reference densities integrate to 1 and have the known moments", "[
         const double from = q == Quantity::component ? r.quantile(1e-12) : 0.0;
         gsl_integration_workspace* w = gsl_integration_workspace_alloc(1000);
         gsl_function g;
-        g.function = [](double y, void* rp) { return static_cast<const MaxwellReference*>(rp)->pdf(y); };
+        g.function = [](double y, void* rp) {
+          return static_cast<const MaxwellReference*>(rp)->pdf(y);
+        };
         g.params = const_cast<MaxwellReference*>(&r);
         double val = 0, err = 0;
         gsl_integration_qags(&g, from, x, 1e-14, 1e-11, 1000, w, &val, &err);
         gsl_integration_workspace_free(w);
-        CHECK(val == Approx(p - (q == Quantity::component ? 1e-12 : 0.0)).epsilon(1e-8).margin(1e-13));
+        CHECK(val ==
+              Approx(p - (q == Quantity::component ? 1e-12 : 0.0)).epsilon(1e-8).margin(1e-13));
       }
     }
   }
@@ -77,7 +84,8 @@ TEST_CASE("MB reference: D = 1 speed is half-normal, D = 3 speed is Maxwell's", 
   const MaxwellReference three{Quantity::speed, 3, 1.0, 1.0};
   // f(v) = sqrt(2/pi) v^2 exp(-v^2/2) for kT/m = 1.
   for (double v : {0.1, 1.0, 2.5, 6.0})
-    CHECK(three.pdf(v) == Approx(std::sqrt(2 / M_PI) * v * v * std::exp(-0.5 * v * v)).epsilon(1e-14));
+    CHECK(three.pdf(v) ==
+          Approx(std::sqrt(2 / M_PI) * v * v * std::exp(-0.5 * v * v)).epsilon(1e-14));
 }
 
 TEST_CASE("MB reference rejects bad parameters", "[analysis]") {

@@ -36,7 +36,8 @@ struct TempDir {
     fs::remove_all(path, ec);
   }
   std::size_t entries() const {
-    return static_cast<std::size_t>(std::distance(fs::directory_iterator(path), fs::directory_iterator{}));
+    return static_cast<std::size_t>(
+        std::distance(fs::directory_iterator(path), fs::directory_iterator{}));
   }
 };
 
@@ -81,7 +82,8 @@ TEST_CASE("A failing write leaves the old file and no partial file", "[analysis]
 TEST_CASE("A missing or unwritable folder is an InvalidInput naming the path", "[analysis]") {
   TempDir dir;
   const std::string missing = (dir.path / "no" / "such" / "x.csv").string();
-  CHECK_THROWS_WITH(write_csv(missing, {"x"}, {{1}}), Catch::Contains(missing) && Catch::Contains("does not exist"));
+  CHECK_THROWS_WITH(write_csv(missing, {"x"}, {{1}}),
+                    Catch::Contains(missing) && Catch::Contains("does not exist"));
   CHECK_THROWS_AS(write_csv(missing, {"x"}, {{1}}), InvalidInput);
   // /proc is a folder nobody, root included, can create files in.
   CHECK_THROWS_WITH(write_csv("/proc/hypergas_x.csv", {"x"}, {{1}}),
@@ -107,13 +109,15 @@ TEST_CASE("JSON summary: one object, keys in order, NaN as null", "[analysis]") 
                         {"wall_s", 0.25},
                         {"drift", NAN},
                         {"ok", true}};
-  CHECK(to_json(o) == R"({"dim": 3, "engine": "dsmc \"x\"", "wall_s": 0.25, "drift": null, "ok": true})");
+  CHECK(to_json(o) ==
+        R"({"dim": 3, "engine": "dsmc \"x\"", "wall_s": 0.25, "drift": null, "ok": true})");
   TempDir dir;
   write_json((dir.path / "summary.json").string(), o);
   CHECK(read(dir.path / "summary.json") == to_json(o) + "\n");
 }
 
-TEST_CASE("MomentsRecorder writes moments.csv and speed_histogram.csv per DESIGN.md", "[analysis]") {
+TEST_CASE("MomentsRecorder writes moments.csv and speed_histogram.csv per DESIGN.md",
+          "[analysis]") {
   test::OwnedState st(3, 20000);
   Rng rng(51);
   MomentsRecorder rec(40);

@@ -115,7 +115,8 @@ TEST_CASE("Mixtures: pooled mass-weighted speeds are MB only at one temperature"
   for (int sp : {-1, 1}) {
     const MaxwellReference ref = reference(s, Quantity::speed, sp);
     CHECK(ks_test(values(s, Quantity::speed, sp), ref).p_value > 1e-4);
-    CHECK(chi_square_test(make_histogram(values(s, Quantity::speed, sp), ref), ref, 1).p_value > 1e-4);
+    CHECK(chi_square_test(make_histogram(values(s, Quantity::speed, sp), ref), ref, 1).p_value >
+          1e-4);
   }
   // Two temperatures (0.5 and 1.5, mean 1): each species is MB, the pooled gas is not.
   fill(0.5, 1.5);

@@ -14,12 +14,12 @@ namespace hypergas::analysis {
 
 /// The result of fit_relaxation; time units are those of t.
 struct RelaxationFit {
-  Estimate amplitude;     ///< A, units of y
-  Estimate rate;          ///< 1 / tau, 1/time
-  Estimate tau;           ///< relaxation time, time (error propagated from the rate)
-  Estimate offset;        ///< c, units of y (error 0 when held fixed)
-  double chi2 = 0.0;      ///< weighted sum of squared residuals
-  std::size_t dof = 0;    ///< points - fitted parameters
+  Estimate amplitude;   ///< A, units of y
+  Estimate rate;        ///< 1 / tau, 1/time
+  Estimate tau;         ///< relaxation time, time (error propagated from the rate)
+  Estimate offset;      ///< c, units of y (error 0 when held fixed)
+  double chi2 = 0.0;    ///< weighted sum of squared residuals
+  std::size_t dof = 0;  ///< points - fitted parameters
   std::size_t iterations = 0;
 };
 

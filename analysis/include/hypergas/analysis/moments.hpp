@@ -20,12 +20,12 @@ struct Estimate {
 
 /// Velocity moments of one species or of all particles.
 struct Moments {
-  std::size_t n = 0;     ///< particles used
-  double kT = 0.0;       ///< temperature sum m v^2 / (D n), energy units
-  Estimate m2;           ///< <|v|^2>, velocity^2
-  Estimate m4;           ///< <|v|^4>, velocity^4
-  Estimate m6;           ///< <|v|^6>, velocity^6
-  Estimate kurtosis_x;   ///< <w_x^4> / <w_x^2>^2 of the (mass-weighted) x component, MB: 3
+  std::size_t n = 0;    ///< particles used
+  double kT = 0.0;      ///< temperature sum m v^2 / (D n), energy units
+  Estimate m2;          ///< <|v|^2>, velocity^2
+  Estimate m4;          ///< <|v|^4>, velocity^4
+  Estimate m6;          ///< <|v|^6>, velocity^6
+  Estimate kurtosis_x;  ///< <w_x^4> / <w_x^2>^2 of the (mass-weighted) x component, MB: 3
   /// <w^4> / (D(D+2) (kT/m_mean)^2) of mass-weighted velocities (dimensionless, MB: 1;
   /// for one species this is D m4 / ((D+2) m2^2)). Its error ignores the O(1/n) error of kT.
   Estimate m4_ratio;

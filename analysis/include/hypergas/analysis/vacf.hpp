@@ -18,16 +18,16 @@
 namespace hypergas::analysis {
 
 /// VACF for lags 0 .. max_lag (max_lag < frames), by FFT. velocity^2.
-std::vector<double> vacf(const std::vector<double>& velocities, std::size_t frames,
-                         std::size_t n, int dim, std::size_t max_lag);
+std::vector<double> vacf(const std::vector<double>& velocities, std::size_t frames, std::size_t n,
+                         int dim, std::size_t max_lag);
 
 /// Same as vacf() by the direct double sum (reference; slow for long series). velocity^2.
 std::vector<double> vacf_direct(const std::vector<double>& velocities, std::size_t frames,
                                 std::size_t n, int dim, std::size_t max_lag);
 
 /// MSD for lags 0 .. max_lag from unwrapped positions, by FFT. length^2.
-std::vector<double> msd(const std::vector<double>& positions, std::size_t frames,
-                        std::size_t n, int dim, std::size_t max_lag);
+std::vector<double> msd(const std::vector<double>& positions, std::size_t frames, std::size_t n,
+                        int dim, std::size_t max_lag);
 
 /// Same as msd() by the direct double sum (reference). length^2.
 std::vector<double> msd_direct(const std::vector<double>& positions, std::size_t frames,

@@ -4,6 +4,7 @@
 // Deterministic: numerical quadrature (GSL QAGI/QAGS) at relative tolerance 1e-10.
 #include <catch2/catch.hpp>
 
+#include <gsl/gsl_cdf.h>
 #include <gsl/gsl_integration.h>
 
 #include <cmath>
@@ -86,6 +87,22 @@ TEST_CASE("MB reference: D = 1 speed is half-normal, D = 3 speed is Maxwell's", 
   for (double v : {0.1, 1.0, 2.5, 6.0})
     CHECK(three.pdf(v) ==
           Approx(std::sqrt(2 / M_PI) * v * v * std::exp(-0.5 * v * v)).epsilon(1e-14));
+}
+
+TEST_CASE("MB reference CDFs agree with GSL's chi-square and gamma CDFs", "[analysis]") {
+  // maxwell.cpp evaluates P(D/2, x) and Q(D/2, x) by its own series / closed forms; GSL's
+  // gsl_cdf_chisq_P/Q and gsl_cdf_gamma_P/Q are the reference (both ~1e-15 relative).
+  for (int d = 1; d <= 12; ++d) {
+    const MaxwellReference speed{Quantity::speed, d, 1.0, 1.0};
+    const MaxwellReference energy{Quantity::energy, d, 2.0, 1.0};
+    for (double u = 1e-4; u < 12.0; u *= 1.07) {
+      INFO("D = " << d << " u = " << u);
+      CHECK(speed.cdf(u) == Approx(gsl_cdf_chisq_P(u * u, d)).epsilon(1e-12));
+      CHECK(speed.upper_tail(u) == Approx(gsl_cdf_chisq_Q(u * u, d)).epsilon(1e-12));
+      CHECK(energy.cdf(u) == Approx(gsl_cdf_gamma_P(u, 0.5 * d, 2.0)).epsilon(1e-12));
+      CHECK(energy.upper_tail(u) == Approx(gsl_cdf_gamma_Q(u, 0.5 * d, 2.0)).epsilon(1e-12));
+    }
+  }
 }
 
 TEST_CASE("MB reference rejects bad parameters", "[analysis]") {

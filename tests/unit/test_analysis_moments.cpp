@@ -74,3 +74,26 @@ TEST_CASE("MB samples: moments within their reported errors, and honest errors",
   CHECK(std::sqrt(p4 / replicas) == Approx(1.0).margin(0.15));
   CHECK(std::sqrt(pk / replicas) == Approx(1.0).margin(0.15));
 }
+
+TEST_CASE("Microcanonical gas: m4_ratio is M/(M+2), not 1 (M = D N)", "[analysis]") {
+  // Velocities uniform on the energy sphere |V|^2 = const in R^M (a normalised Gaussian
+  // vector): with kT from the snapshot, E[<v^4>] / (D(D+2) kT^2) = M/(M+2) exactly (the
+  // caveat in analysis/README.md). N = 10, D = 3: 30/32 = 0.9375. Checked to 5 standard
+  // errors of the replica mean (false failure 5.7e-7); the difference from 1 is ~20 of them.
+  constexpr int d = 3, n = 10, replicas = 20000;
+  constexpr double m_dim = d * n;
+  Rng rng(23);
+  double sum = 0, sum_sq = 0;
+  for (int r = 0; r < replicas; ++r) {
+    test::OwnedState st(d, n);
+    test::fill_maxwell(st, rng, 1.0);  // any scale: m4_ratio is scale-free
+    const double x = compute_moments(st.snapshot()).m4_ratio.value;
+    sum += x;
+    sum_sq += x * x;
+  }
+  const double mean = sum / replicas;
+  const double se = std::sqrt((sum_sq / replicas - mean * mean) / (replicas - 1));
+  INFO("mean " << mean << " +- " << se);
+  CHECK(std::abs(mean - m_dim / (m_dim + 2)) < 5 * se);
+  CHECK(std::abs(mean - 1.0) > 10 * se);
+}

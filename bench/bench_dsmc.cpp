@@ -1,0 +1,39 @@
+// bench_dsmc: DSMC throughput, one JSON object per line (see dsmc_bench.hpp).
+// Usage: bench_dsmc [--dims 1,2,3] [--ns 10000,1000000] [--reps 3] [--min-collisions 5e6]
+//                   [--model hs|maxwell|vhs]
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include "dsmc_bench.hpp"
+
+namespace {
+template <class T>
+std::vector<T> parse_list(const std::string& s) {
+  std::vector<T> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ',')) out.push_back(static_cast<T>(std::stod(item)));
+  return out;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  hypergas::bench::DsmcBenchOptions o;
+  try {
+    for (int i = 1; i + 1 < argc; i += 2) {
+      const std::string k = argv[i], v = argv[i + 1];
+      if (k == "--dims") o.dims = parse_list<int>(v);
+      else if (k == "--ns") o.ns = parse_list<std::size_t>(v);
+      else if (k == "--reps") o.reps = std::stoi(v);
+      else if (k == "--min-collisions") o.min_collisions = std::stod(v);
+      else if (k == "--model") o.model = hypergas::dsmc::parse_model(v);
+      else throw hypergas::InvalidInput("unknown option " + k);
+    }
+    hypergas::bench::run_dsmc_bench(std::cout, o);
+  } catch (const std::exception& e) {
+    std::cerr << "bench_dsmc: " << e.what() << '\n';
+    return 2;
+  }
+}

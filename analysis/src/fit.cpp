@@ -142,9 +142,11 @@ RelaxationFit fit_relaxation(const std::vector<double>& t, const std::vector<dou
   gsl_matrix_free(cov);
   gsl_vector_free(p);
   gsl_multifit_nlinear_free(w);
-  if (status != GSL_SUCCESS || !std::isfinite(r.rate.value) || !std::isfinite(r.rate.error))
-    throw InvalidInput(std::string("fit_relaxation: the fit failed (") + gsl_strerror(status) +
-                       ")");
+  if (status != GSL_SUCCESS)
+    throw InvalidInput(std::string("fit_relaxation: the fit did not converge (") +
+                       gsl_strerror(status) + ")");
+  if (!std::isfinite(r.rate.value) || !std::isfinite(r.rate.error))
+    throw InvalidInput("fit_relaxation: the data do not determine a rate (flat or not decaying)");
   return r;
 }
 

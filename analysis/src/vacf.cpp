@@ -7,6 +7,7 @@
 #include <cmath>
 #include <complex>
 #include <memory>
+#include <mutex>
 #include <string>
 
 #include "hypergas/error.hpp"
@@ -32,8 +33,6 @@ struct FftwFree {
 };
 
 // R(lag) = sum over channels of sum_t0 x_c(t0) x_c(t0 + lag), lags 0..max_lag, by FFT.
-// Each channel is shifted by its first value when `shift` (for positions: keeps the
-// correlations small relative to round-off; the caller accounts for the shift).
 class Correlator {
  public:
   explicit Correlator(std::size_t frames) : frames_(frames) {
@@ -44,12 +43,15 @@ class Correlator {
     out_.reset(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * (len_ / 2 + 1))));
     if (!in_ || !out_) throw std::bad_alloc();
     const int nn = static_cast<int>(len_);
+    std::lock_guard lock(planner_mutex());  // FFTW's planner is not thread-safe
     forward_ = fftw_plan_dft_r2c_1d(nn, in_.get(), out_.get(), FFTW_ESTIMATE);
     backward_ = fftw_plan_dft_c2r_1d(nn, out_.get(), in_.get(), FFTW_ESTIMATE);
+    if (!forward_ || !backward_) throw std::bad_alloc();
   }
   ~Correlator() {
-    fftw_destroy_plan(forward_);
-    fftw_destroy_plan(backward_);
+    std::lock_guard lock(planner_mutex());
+    if (forward_) fftw_destroy_plan(forward_);
+    if (backward_) fftw_destroy_plan(backward_);
   }
   Correlator(const Correlator&) = delete;
   Correlator& operator=(const Correlator&) = delete;
@@ -74,7 +76,11 @@ class Correlator {
   std::size_t frames_, len_;
   std::unique_ptr<double, FftwFree> in_;
   std::unique_ptr<fftw_complex, FftwFree> out_;
-  fftw_plan forward_, backward_;
+  fftw_plan forward_ = nullptr, backward_ = nullptr;
+  static std::mutex& planner_mutex() {
+    static std::mutex m;
+    return m;
+  }
 };
 
 // Channel c = i * dim + k of the series, gathered into a contiguous array.

@@ -71,6 +71,16 @@ TEST_CASE("Relaxation fit rejects bad input", "[analysis]") {
   CHECK_THROWS_AS(fit_relaxation({0, 1, 2}, {1, 0.5, 0.2}), InvalidInput);  // too few points
   CHECK_THROWS_AS(fit_relaxation({0, 1, 2, 3}, {1, NAN, 0.2, 0.1}), InvalidInput);
   CHECK_THROWS_AS(fit_relaxation({0, 1, 2, 3}, {1, 0.5, 0.2, 0.1}, {1, 1, 0, 1}), InvalidInput);
+  // Flat data determine no rate: the fit fails, or reports an error larger than the rate.
+  for (const std::vector<double>& y :
+       {std::vector<double>{1, 1, 1, 1, 1, 1}, std::vector<double>{1, 1.01, 0.99, 1, 1.02, 0.98}}) {
+    try {
+      const RelaxationFit f = fit_relaxation({0, 1, 2, 3, 4, 5}, y);
+      CHECK(f.rate.error > std::abs(f.rate.value));
+    } catch (const InvalidInput&) {
+      SUCCEED("the fit reported its failure");
+    }
+  }
 }
 
 TEST_CASE("MomentsRecorder + fit: a relaxation with a known rate", "[analysis]") {

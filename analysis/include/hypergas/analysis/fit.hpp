@@ -25,7 +25,8 @@ struct RelaxationFit {
 
 /// Fits y = A exp(-rate t) + c. `sigma` (optional, same length as y) are the standard errors
 /// of y. With fit_offset = false, c is held at `fixed_offset` (e.g. 0 for a distance, 1 for
-/// m4_ratio). Throws InvalidInput for mismatched or too short input or a failed fit.
+/// m4_ratio). Throws InvalidInput for mismatched or too short input or a failed fit. Data
+/// that do not decay may still "converge": then rate.error exceeds |rate.value|.
 RelaxationFit fit_relaxation(const std::vector<double>& t, const std::vector<double>& y,
                              const std::vector<double>& sigma = {}, bool fit_offset = true,
                              double fixed_offset = 0.0);

@@ -7,7 +7,7 @@
 //   vacf(lag) = < v(t0) . v(t0 + lag) >,   msd(lag) = < |r(t0 + lag) - r(t0)|^2 >.
 // The FFT versions (FFTW, real-to-complex, zero-padded to >= 2 frames so that the circular
 // correlation equals the linear one; Wiener–Khinchin) cost O(n D L log L); the direct
-// versions O(n D L^2) are the reference they are tested against.
+// versions O(n D L^2) are the reference they are tested against. All are thread-safe.
 #pragma once
 
 #include <cstddef>

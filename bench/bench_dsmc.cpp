@@ -1,6 +1,6 @@
 // bench_dsmc: DSMC throughput, one JSON object per line (see dsmc_bench.hpp).
 // Usage: bench_dsmc [--dims 1,2,3] [--ns 10000,1000000] [--reps 3] [--min-collisions 5e6]
-//                   [--model hs|maxwell|vhs]
+//                   [--model hs|maxwell|vhs] [--threads 2]
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
       else if (k == "--ns") o.ns = parse_list<std::size_t>(v);
       else if (k == "--reps") o.reps = std::stoi(v);
       else if (k == "--min-collisions") o.min_collisions = std::stod(v);
+      else if (k == "--threads") o.threads = std::stoi(v);
       else if (k == "--model") o.model = hypergas::dsmc::parse_model(v);
       else throw hypergas::InvalidInput("unknown option " + k);
     }

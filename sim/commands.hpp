@@ -1,0 +1,34 @@
+// sim/commands.hpp -- the subcommands of `hypergas`, each in its own file.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <string>
+
+#include "options.hpp"
+
+namespace hypergas::cli {
+
+/// Options of the default scene (`hypergas` with no subcommand).
+struct SceneOptions {
+  std::string out = "results";  ///< folder for the CSV and PNG files
+  std::uint64_t seed = 2026;    ///< random seed
+  long long n = 20000;          ///< particles per dimension
+  double until = 12.0;          ///< end time in equilibrium mean collision times (1D: 3x)
+};
+
+/// `hypergas`: relaxes a non-equilibrium gas in every D = 1..6, prints one table row per
+/// D, writes CSV and PNG plots. Returns the exit code.
+int default_scene(const SceneOptions& o);
+/// `hypergas run`: one simulation, files into --out. Returns the exit code.
+int run_command(const RunOptions& o);
+/// `hypergas bench`: throughput, one JSON object per line on stdout. Returns the exit code.
+int bench_command(const BenchOptions& o);
+
+/// Registers `hypergas report` on `app` (error against run time; a hook for its owner).
+/// The returned callback runs it and gives the exit code.
+CLI::App* add_report_command(CLI::App& app);
+/// Runs `hypergas report` (after parsing). Returns the exit code.
+int report_command();
+
+}  // namespace hypergas::cli

@@ -1,0 +1,46 @@
+// sim/engine_runs.hpp -- one run of an engine, as `hypergas run` and the default scene use it.
+//
+// `simulate` instantiates the engine for the requested (D, model, features) through
+// sim/dispatch.hpp, runs it with the analysis recorders attached and returns the recorders
+// and the summary fields; the callers decide which files to write. All engine template
+// instantiations of the command live in run_dsmc.cpp and run_edmd.cpp.
+#pragma once
+
+#include <memory>
+
+#include "hypergas/analysis/moments_recorder.hpp"
+#include "hypergas/analysis/output.hpp"
+#include "hypergas/analysis/vacf_recorder.hpp"
+#include "options.hpp"
+
+namespace hypergas::cli {
+
+/// What one engine run produced.
+struct RunRecord {
+  analysis::MomentsRecorder moments;              ///< one row per sampling time
+  std::unique_ptr<analysis::VacfRecorder> vacf;   ///< EDMD only (nullptr for DSMC)
+  analysis::JsonObject summary;  ///< summary.json: the contract's keys first, then extras
+};
+
+/// Runs the engine `o` names (options already validated); progress bar on stderr if
+/// `progress` and stderr is a terminal. Throws InvalidInput for parameters the engine
+/// rejects and Interrupted after SIGINT/SIGTERM.
+RunRecord simulate(const RunOptions& o, bool progress);
+
+/// DSMC (time in equilibrium mean collision times), default until 10.
+RunRecord simulate_dsmc(const RunOptions& o, bool progress);
+
+/// EDMD (sigma = m = kT = 1), default until 20. The first fifth of [0, until] equilibrates
+/// the lattice start without sampling; moments, VACF, Z and rates come from the rest.
+RunRecord simulate_edmd(const RunOptions& o, bool progress);
+
+/// The sampling interval actually used: `every` shrunk so that `span` is a whole number
+/// of intervals (span / 50 when every <= 0).
+double sampling_interval(double span, double every);
+
+/// The value of `key` in `o` as text (doubles with 4 significant digits); "-" if absent.
+std::string summary_field(const analysis::JsonObject& o, const std::string& key);
+/// The value of `key` in `o` as a double (NaN if absent or not a number).
+double summary_number(const analysis::JsonObject& o, const std::string& key);
+
+}  // namespace hypergas::cli

@@ -1,0 +1,195 @@
+// sim/options.cpp -- option registration (with units and defaults in --help) and validation.
+#include "options.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/core.h>
+#include <fmt/ranges.h>
+
+#include "hypergas/error.hpp"
+#include "hypergas/initial_state.hpp"
+#include "hypergas/vec.hpp"
+
+namespace hypergas::cli {
+
+namespace {
+bool finite_positive(double x) { return std::isfinite(x) && x > 0.0; }
+
+[[noreturn]] void bad(const std::string& msg) { throw InvalidInput(msg); }
+
+bool contains(const std::vector<std::string>& names, const std::string& s) {
+  return std::find(names.begin(), names.end(), s) != names.end();
+}
+
+void check_dim(int d, const char* opt) {
+  if (d < min_dim || d > max_dim)
+    bad(fmt::format("{} must be a dimension in {}..{}, got {}", opt, min_dim, max_dim, d));
+}
+
+void check_n(long long n) {
+  if (n < 2) bad(fmt::format("--n must be at least 2 particles, got {}", n));
+  if (n > (1LL << 31))
+    bad(fmt::format("--n must be at most 2^31 = {} particles, got {}", 1LL << 31, n));
+}
+
+std::vector<double> jamming_list() {
+  std::vector<double> v;
+  for (int d = min_dim; d <= max_dim; ++d) v.push_back(jamming_packing(d));
+  return v;
+}
+
+const std::vector<std::string> engine_names{"dsmc", "edmd"};
+const std::vector<std::string> model_names{"hs", "maxwell", "vhs"};
+}  // namespace
+
+const std::vector<std::string>& init_names() {
+  static const std::vector<std::string> names(initial_state_names.begin(),
+                                              initial_state_names.end());
+  return names;
+}
+
+std::string default_init(EngineKind e) { return e == EngineKind::dsmc ? "delta" : "maxwell"; }
+
+double jamming_packing(int dim) {
+  // D = 1: rods fill the line only at eta = 1. D = 2: bidisperse disks jam at 0.84
+  // (O'Hern, Silbert, Liu & Nagel, PRE 68, 011306 (2003)). D = 3..6: maximally random
+  // jammed hyperspheres, 0.64, 0.46, 0.31, 0.20 (Skoge, Donev, Stillinger & Torquato,
+  // PRE 74, 041127 (2006), Table I).
+  static constexpr double eta[] = {1.0, 0.84, 0.64, 0.46, 0.31, 0.20};
+  check_dim(dim, "dimension");
+  return eta[dim - 1];
+}
+
+EngineKind RunOptions::engine_kind() const {
+  return engine == "edmd" ? EngineKind::edmd : EngineKind::dsmc;
+}
+
+ModelKind RunOptions::model_kind() const {
+  if (model == "maxwell") return ModelKind::maxwell;
+  if (model == "vhs") return ModelKind::vhs;
+  return ModelKind::hard_sphere;
+}
+
+void add_run_options(CLI::App& app, RunOptions& o) {
+  app.add_option("--engine", o.engine, "dsmc (velocity-space collisions) | edmd (event-driven MD)")
+      ->capture_default_str();
+  app.add_option("--dim,-d", o.dim, "dimension D, 1..6")->capture_default_str();
+  app.add_option("--n,-n", o.n, "number of particles, >= 2")->capture_default_str();
+  app.add_option("--out,-o", o.out,
+                 "output folder (created if missing); files appear only when complete")
+      ->required();
+  app.add_flag("--json", o.json, "print the summary as one JSON object, the last stdout line");
+  app.add_option("--model", o.model,
+                 "DSMC collision model: hs (hard spheres, rate ~ |g|) | maxwell (rate "
+                 "independent of |g|) | vhs (variable hard spheres, rate ~ |g|^a, see --vhs-exponent)")
+      ->capture_default_str();
+  app.add_option("--vhs-exponent", o.vhs_exponent,
+                 "VHS rate exponent a: pair rate ~ |g|^a, in [0, 1] (hs is 1, maxwell 0)")
+      ->capture_default_str();
+  app.add_option("--init", o.init,
+                 fmt::format("initial velocities: {} (default: dsmc {}, edmd {}; see "
+                             "include/hypergas/initial_state.hpp)",
+                             fmt::join(init_names(), " | "), default_init(EngineKind::dsmc),
+                             default_init(EngineKind::edmd)));
+  app.add_option("--until", o.until,
+                 "end time; dsmc: equilibrium mean collision times (default 10); edmd: "
+                 "sigma sqrt(m/kT) (default 20)");
+  app.add_option("--every", o.every, "sampling interval, same unit as --until (default until/50)");
+  app.add_option("--packing", o.packing,
+                 fmt::format("edmd packing fraction eta (volume of the spheres / box volume), "
+                             "below the D-dimensional jamming density ({} for D = 1..6)",
+                             fmt::join(jamming_list(), ", ")))
+      ->capture_default_str();
+  app.add_option("--mass-ratio", o.mass_ratio,
+                 "m2/m1 of a two-mass gas, finite and > 0 (1 = one species; use != 1 in D = 1)")
+      ->capture_default_str();
+  app.add_option("--fraction", o.fraction, "number fraction of species 2 (mass m2), in [0, 1]")
+      ->capture_default_str();
+  app.add_option("--temperature", o.temperature,
+                 "initial kT in units of m1 v0^2 (dsmc; edmd fixes kT = 1), finite and > 0")
+      ->capture_default_str();
+  app.add_option("--seed", o.seed, "random seed (any 64-bit integer)")->capture_default_str();
+  app.add_option("--threads,-j", o.threads, "worker threads, >= 1")->capture_default_str();
+}
+
+void add_bench_options(CLI::App& app, BenchOptions& o) {
+  app.add_option("--engine", o.engine, "dsmc | edmd | all")->capture_default_str();
+  app.add_option("--dim,-d", o.dims, "dimensions to measure, each in 1..6 (repeatable)")
+      ->capture_default_str();
+  app.add_option("--n,-n", o.ns, "particle numbers to measure, each >= 2 (repeatable)")
+      ->capture_default_str();
+  app.add_option("--model", o.model, "DSMC collision model: hs | maxwell | vhs")
+      ->capture_default_str();
+  app.add_option("--packing", o.packing, "EDMD packing fraction eta")->capture_default_str();
+  app.add_option("--reps", o.reps, "timed runs per point, the median is reported, 1..100")
+      ->capture_default_str();
+  app.add_option("--min-collisions", o.min_collisions,
+                 "accepted collisions per timed run, >= 1000")
+      ->capture_default_str();
+  app.add_option("--seed", o.seed, "random seed")->capture_default_str();
+}
+
+void validate(const RunOptions& o) {
+  if (!contains(engine_names, o.engine))
+    bad(fmt::format("unknown engine '{}' (--engine must be dsmc or edmd)", o.engine));
+  check_dim(o.dim, "--dim");
+  check_n(o.n);
+  if (o.out.empty()) bad("--out must name an output folder");
+  if (!contains(model_names, o.model))
+    bad(fmt::format("unknown model '{}' (--model must be hs, maxwell or vhs)", o.model));
+  const EngineKind e = o.engine_kind();
+  if (e == EngineKind::edmd && o.model != "hs")
+    bad(fmt::format("--model {} needs --engine dsmc: event-driven MD simulates hard spheres",
+                    o.model));
+  if (!(std::isfinite(o.vhs_exponent) && o.vhs_exponent >= 0.0 && o.vhs_exponent <= 1.0))
+    bad(fmt::format("--vhs-exponent must be in [0, 1], got {}", o.vhs_exponent));
+  if (!o.init.empty() && !contains(init_names(), o.init))
+    bad(fmt::format("unknown initial state '{}' (known: {})", o.init,
+                    fmt::join(init_names(), ", ")));
+  if (o.until >= 0.0 || std::isnan(o.until))
+    if (!finite_positive(o.until))
+      bad(fmt::format("--until must be a finite time > 0, got {}", o.until));
+  if (o.every >= 0.0 || std::isnan(o.every))
+    if (!finite_positive(o.every))
+      bad(fmt::format("--every must be a finite interval > 0, got {}", o.every));
+  if (!finite_positive(o.packing))
+    bad(fmt::format("--packing must be a finite fraction > 0, got {}", o.packing));
+  const double jam = jamming_packing(o.dim);
+  if (e == EngineKind::edmd && o.packing >= jam)
+    bad(fmt::format("--packing {} is at or above the jamming density {} of hard spheres in "
+                    "D = {}",
+                    o.packing, jam, o.dim));
+  if (!finite_positive(o.mass_ratio))
+    bad(fmt::format("--mass-ratio must be a finite mass ratio > 0, got {}", o.mass_ratio));
+  if (!(std::isfinite(o.fraction) && o.fraction >= 0.0 && o.fraction <= 1.0))
+    bad(fmt::format("--fraction must be in [0, 1], got {}", o.fraction));
+  if (!finite_positive(o.temperature))
+    bad(fmt::format("--temperature must be a finite kT > 0, got {}", o.temperature));
+  if (e == EngineKind::edmd && o.temperature != 1.0)
+    bad("--temperature applies to --engine dsmc only (edmd units fix kT = 1)");
+  if (o.threads < 1 || o.threads > 1024)
+    bad(fmt::format("--threads must be in 1..1024, got {}", o.threads));
+}
+
+void validate(const BenchOptions& o) {
+  if (o.engine != "all" && !contains(engine_names, o.engine))
+    bad(fmt::format("unknown engine '{}' (--engine must be dsmc, edmd or all)", o.engine));
+  if (o.dims.empty()) bad("--dim needs at least one dimension");
+  for (int d : o.dims) check_dim(d, "--dim");
+  if (o.ns.empty()) bad("--n needs at least one particle number");
+  for (long long n : o.ns) check_n(n);
+  if (!contains(model_names, o.model))
+    bad(fmt::format("unknown model '{}' (--model must be hs, maxwell or vhs)", o.model));
+  if (!finite_positive(o.packing))
+    bad(fmt::format("--packing must be a finite fraction > 0, got {}", o.packing));
+  for (int d : o.dims)
+    if (o.engine != "dsmc" && o.packing >= jamming_packing(d))
+      bad(fmt::format("--packing {} is at or above the jamming density {} in D = {}", o.packing,
+                      jamming_packing(d), d));
+  if (o.reps < 1 || o.reps > 100) bad(fmt::format("--reps must be in 1..100, got {}", o.reps));
+  if (!(std::isfinite(o.min_collisions) && o.min_collisions >= 1000.0 &&
+        o.min_collisions <= 1e12))
+    bad(fmt::format("--min-collisions must be in [1000, 1e12], got {}", o.min_collisions));
+}
+
+}  // namespace hypergas::cli

@@ -1,0 +1,76 @@
+// sim/options.hpp -- the options of `hypergas run` and `hypergas bench`, and their validation.
+//
+// Options are parsed by CLI11 into plain structs; `validate` then checks every value and
+// throws hypergas::InvalidInput with a message naming the option, the value and what is
+// allowed. main() turns InvalidInput (and CLI11 parse errors) into stderr + exit code 2.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace hypergas::cli {
+
+/// Which engine runs the scene.
+enum class EngineKind { dsmc, edmd };
+/// Which DSMC collision model (EDMD always simulates hard spheres).
+enum class ModelKind { hard_sphere, maxwell, vhs };
+
+/// Everything `hypergas run` takes. Units: DSMC time in equilibrium mean collision times,
+/// EDMD in sigma sqrt(m/kT) with sigma = m = kT = 1.
+struct RunOptions {
+  std::string engine = "dsmc";   ///< dsmc | edmd
+  int dim = 3;                   ///< D, 1..6
+  long long n = 10000;           ///< particles (signed so that negative input is caught)
+  std::string out;               ///< output folder (created; files written atomically)
+  bool json = false;             ///< print summary.json's object as the last stdout line
+  std::string model = "hs";      ///< hs | maxwell | vhs (DSMC)
+  double vhs_exponent = 0.5;     ///< VHS rate exponent a (rate ~ |g|^a), in [0, 1]
+  std::string init;              ///< initial state name; empty = engine default
+  double until = -1.0;           ///< end time; < 0 = engine default
+  double every = -1.0;           ///< sampling interval; < 0 = until / 50
+  double packing = 0.1;          ///< EDMD packing fraction eta
+  double mass_ratio = 1.0;       ///< m2 / m1 of a two-mass gas (1 = one species)
+  double fraction = 0.5;         ///< number fraction of the heavy species
+  double temperature = 1.0;      ///< initial kT (DSMC velocity scale; EDMD fixes kT = 1)
+  std::uint64_t seed = 1;        ///< random seed
+  int threads = 1;               ///< worker threads (independent replicas)
+
+  EngineKind engine_kind() const;  ///< valid after validate()
+  ModelKind model_kind() const;    ///< valid after validate()
+};
+
+/// Throughput study options of `hypergas bench` (see bench/dsmc_bench.hpp, edmd_bench.hpp).
+struct BenchOptions {
+  std::string engine = "dsmc";              ///< dsmc | edmd | all
+  std::vector<int> dims{1, 2, 3, 4, 5, 6};  ///< dimensions to measure
+  std::vector<long long> ns{100000};        ///< particle numbers to measure
+  std::string model = "hs";                 ///< DSMC model
+  double packing = 0.1;                     ///< EDMD packing fraction
+  int reps = 3;                             ///< timed runs per point (median reported)
+  double min_collisions = 5e6;              ///< accepted collisions per timed run
+  std::uint64_t seed = 1;
+};
+
+/// Registers the `run` options on `app`, writing into `o`.
+void add_run_options(CLI::App& app, RunOptions& o);
+/// Registers the `bench` options on `app`, writing into `o`.
+void add_bench_options(CLI::App& app, BenchOptions& o);
+
+/// Checks every run option; throws InvalidInput with a clear message on the first bad one.
+void validate(const RunOptions& o);
+/// Checks every bench option; throws InvalidInput on the first bad one.
+void validate(const BenchOptions& o);
+
+/// Known initial-state names (hypergas/initial_state.hpp; the same for both engines).
+const std::vector<std::string>& init_names();
+/// The initial state an engine uses without --init (dsmc: delta, edmd: maxwell).
+std::string default_init(EngineKind e);
+
+/// Densest packing fraction an EDMD start may ask for in D dimensions: the jamming
+/// (maximally random jammed) density, see options.cpp for the sources.
+double jamming_packing(int dim);
+
+}  // namespace hypergas::cli

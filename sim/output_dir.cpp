@@ -1,0 +1,87 @@
+// sim/output_dir.cpp -- staging folder, commit by rename, cleanup on failure.
+#include "output_dir.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <stdexcept>
+#include <system_error>
+#include <unistd.h>
+
+#include <fmt/core.h>
+
+#include "hypergas/error.hpp"
+
+namespace fs = std::filesystem;
+
+namespace hypergas::cli {
+
+namespace {
+[[noreturn]] void unwritable(const fs::path& dir, const std::string& why) {
+  throw InvalidInput(fmt::format("output folder '{}' is not writable: {}", dir.string(), why));
+}
+}  // namespace
+
+OutputDir::OutputDir(fs::path dir) : dir_(std::move(dir)) {
+  if (dir_.empty()) throw InvalidInput("output folder name is empty");
+  std::error_code ec;
+  // Find the missing ancestors so that exactly those can be removed on failure.
+  std::vector<fs::path> missing;
+  for (fs::path p = fs::absolute(dir_, ec); !p.empty(); p = p.parent_path()) {
+    if (fs::exists(fs::symlink_status(p, ec)) || p == p.parent_path()) break;
+    missing.push_back(p);
+  }
+  std::reverse(missing.begin(), missing.end());
+  for (const fs::path& p : missing) {
+    if (!fs::create_directory(p, ec) || ec) {
+      for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, ec);
+      created_.clear();
+      unwritable(dir_, fmt::format("cannot create '{}' ({})", p.string(),
+                                   ec ? ec.message() : "exists"));
+    }
+    created_.push_back(p);
+  }
+  if (!fs::is_directory(dir_, ec)) unwritable(dir_, "it exists and is not a folder");
+  staging_ = dir_ / fmt::format(".hypergas-staging-{}", ::getpid());
+  fs::remove_all(staging_, ec);
+  if (!fs::create_directory(staging_, ec) || ec || ::access(staging_.c_str(), W_OK) != 0) {
+    fs::remove_all(staging_, ec);
+    for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, ec);
+    created_.clear();
+    unwritable(dir_, ec ? ec.message() : "permission denied");
+  }
+}
+
+OutputDir::~OutputDir() {
+  std::error_code ec;
+  fs::remove_all(staging_, ec);
+  if (done_) return;
+  // Remove created folders innermost first, and only if still empty (never a user's file).
+  for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, ec);
+}
+
+fs::path OutputDir::staged(std::string_view name) { return staging_ / fs::path(name); }
+
+void OutputDir::write(std::string_view name, std::string_view content) {
+  const fs::path p = staged(name);
+  std::ofstream f(p, std::ios::binary);
+  f.write(content.data(), static_cast<std::streamsize>(content.size()));
+  f.close();
+  if (!f) throw std::runtime_error(fmt::format("cannot write '{}'", p.string()));
+}
+
+void OutputDir::commit() {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(staging_))
+    if (e.is_regular_file()) files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  committed_.clear();
+  for (const fs::path& p : files) {
+    fs::rename(p, dir_ / p.filename());  // throws filesystem_error on failure
+    committed_.push_back(p.filename().string());
+  }
+  std::error_code ec;
+  fs::remove_all(staging_, ec);
+  done_ = true;
+}
+
+}  // namespace hypergas::cli

@@ -1,0 +1,46 @@
+// sim/output_dir.hpp -- an output folder that receives all of a run's files or none.
+//
+// Files are written into a hidden staging folder inside the output folder and moved into
+// place by `commit()` (one rename per file, atomic on POSIX). If the run fails or is
+// interrupted before `commit()`, the destructor removes the staging folder and every
+// folder this object created, so nothing partial is left behind.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hypergas::cli {
+
+class OutputDir {
+ public:
+  /// Creates `dir` (and missing parents), checks that files can be created in it and makes
+  /// the staging folder. Throws InvalidInput naming the folder and the reason otherwise.
+  explicit OutputDir(std::filesystem::path dir);
+  OutputDir(const OutputDir&) = delete;
+  OutputDir& operator=(const OutputDir&) = delete;
+  /// Without a commit: removes the staging folder and the folders created by the constructor.
+  ~OutputDir();
+
+  /// Where file `name` is written before commit (inside the staging folder).
+  std::filesystem::path staged(std::string_view name);
+  /// Writes `content` to the staged file `name` (throws std::runtime_error on I/O failure).
+  void write(std::string_view name, std::string_view content);
+  /// Moves every file of the staging folder into the output folder and removes staging.
+  void commit();
+
+  const std::filesystem::path& dir() const { return dir_; }
+  const std::filesystem::path& staging() const { return staging_; }
+  /// Names of the files moved by the last commit, in order.
+  const std::vector<std::string>& committed() const { return committed_; }
+
+ private:
+  std::filesystem::path dir_;
+  std::filesystem::path staging_;
+  std::vector<std::filesystem::path> created_;  // folders we made, outermost first
+  std::vector<std::string> committed_;
+  bool done_ = false;
+};
+
+}  // namespace hypergas::cli

@@ -1,0 +1,70 @@
+// sim/plot.cpp -- gnuplot subprocess (fork + exec, script on its stdin).
+#include "plot.hpp"
+
+#include <cerrno>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fmt/core.h>
+
+namespace hypergas::cli {
+
+bool gnuplot_available() {
+  const char* path = std::getenv("PATH");
+  if (!path) return false;
+  std::string p(path);
+  for (std::size_t start = 0; start <= p.size();) {
+    const std::size_t end = std::min(p.find(':', start), p.size());
+    const std::string dir = p.substr(start, end - start);
+    const std::string exe = (dir.empty() ? std::string(".") : dir) + "/gnuplot";
+    if (::access(exe.c_str(), X_OK) == 0) return true;
+    start = end + 1;
+  }
+  return false;
+}
+
+bool run_gnuplot(const std::string& script, const std::filesystem::path& dir) {
+  static bool warned = false;
+  if (!gnuplot_available()) {
+    if (!warned) fmt::print(stderr, "hypergas: gnuplot not found; skipping PNG plots (CSV written)\n");
+    warned = true;
+    return false;
+  }
+  int fds[2];
+  if (::pipe(fds) != 0) return false;
+  const pid_t pid = ::fork();
+  if (pid < 0) return false;
+  if (pid == 0) {  // child: stdin from the pipe, stdout discarded, stderr kept
+    ::dup2(fds[0], STDIN_FILENO);
+    ::close(fds[0]);
+    ::close(fds[1]);
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (null >= 0) ::dup2(null, STDOUT_FILENO);
+    if (::chdir(dir.c_str()) != 0) ::_exit(127);
+    ::execlp("gnuplot", "gnuplot", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::close(fds[0]);
+  std::signal(SIGPIPE, SIG_IGN);  // gnuplot may exit before reading everything
+  const char* p = script.data();
+  std::size_t left = script.size();
+  while (left > 0) {
+    const ssize_t w = ::write(fds[1], p, left);
+    if (w <= 0) break;
+    p += w;
+    left -= static_cast<std::size_t>(w);
+  }
+  ::close(fds[1]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  if (!ok) fmt::print(stderr, "hypergas: gnuplot failed; PNG plots may be missing\n");
+  return ok;
+}
+
+}  // namespace hypergas::cli

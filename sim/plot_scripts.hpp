@@ -1,0 +1,22 @@
+// sim/plot_scripts.hpp -- the gnuplot scripts the commands generate (PNG via pngcairo).
+//
+// Scripts read the CSV files by column name (gnuplot >= 5.0), so they keep working when
+// columns are added at the end.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace hypergas::cli {
+
+/// Plots of one `hypergas run` folder: moments.png (kurtosis and L1 distance against
+/// time), speed_histogram.png (final speeds against MB) and, with `vacf`, vacf.png.
+std::string run_plot_script(bool vacf);
+
+/// Plots of the default scene: relaxation.png (L1 distance from MB against collisions per
+/// particle, every D), kurtosis.png and speed_histograms.png (final state, one panel per D).
+/// `dims` lists the dimensions with files relaxation_D<d>.csv and speed_histogram_D<d>.csv;
+/// `threshold` is the stated L1 distance drawn as a line.
+std::string scene_plot_script(const std::vector<int>& dims, double threshold);
+
+}  // namespace hypergas::cli

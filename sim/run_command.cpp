@@ -1,0 +1,48 @@
+// sim/run_command.cpp -- `hypergas run`: one simulation, its files, its summary.
+//
+// Order of work: the options are already validated; the output folder is prepared (created,
+// checked writable, staging folder made); the engine runs and the recorders write CSV into
+// staging; summary.json and the PNG plots follow; only then are the files moved into
+// place. Any exception before the commit leaves the folder as it was.
+#include <fmt/core.h>
+
+#include "commands.hpp"
+#include "engine_runs.hpp"
+#include "hypergas/analysis/output.hpp"
+#include "output_dir.hpp"
+#include "plot.hpp"
+#include "plot_scripts.hpp"
+
+namespace hypergas::cli {
+
+
+int run_command(const RunOptions& o) {
+  OutputDir out(o.out);
+  const bool edmd = o.engine_kind() == EngineKind::edmd;
+  const RunRecord rec = simulate(o, true);
+  const analysis::JsonObject& summary = rec.summary;
+  rec.moments.write_moments_csv(out.staged("moments.csv").string());
+  rec.moments.write_speed_histogram_csv(out.staged("speed_histogram.csv").string());
+  if (rec.vacf && rec.vacf->frames() >= 2) rec.vacf->write_csv(out.staged("vacf.csv").string());
+  analysis::write_json(out.staged("summary.json").string(), summary);
+  run_gnuplot(run_plot_script(rec.vacf && rec.vacf->frames() >= 2), out.staging());
+  out.commit();
+
+  const auto f = [&](const char* k) { return summary_field(summary, k); };
+  fmt::print("{} D={} model={} n={} seed={}: {} collisions in {} s ({} collisions/s)\n",
+             f("engine"), f("dim"), f("model"), f("n"), f("seed"), f("collisions"), f("wall_s"),
+             f("collisions_per_s"));
+  fmt::print("  final kurtosis_x {} (MB 3), KS p-value of speeds {}, energy drift {}, "
+             "momentum drift {}\n",
+             f("kurtosis_x"), f("ks_p_speed"), f("energy_rel_drift"), f("momentum_drift"));
+  if (edmd)
+    fmt::print("  packing {}, Z = PV/NkT {}, collision rate {}, mean free time {}\n",
+               f("packing"), f("Z"), f("collision_rate"), f("mean_free_time"));
+  std::string files;
+  for (const auto& name : out.committed()) files += (files.empty() ? "" : ", ") + name;
+  fmt::print("  wrote {}/: {}\n", out.dir().string(), files);
+  if (o.json) fmt::print("{}\n", analysis::to_json(summary));
+  return 0;
+}
+
+}  // namespace hypergas::cli

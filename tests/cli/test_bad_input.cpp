@@ -1,0 +1,113 @@
+// CLI tests: every kind of bad input gets exit code 2, a clear one-line message on stderr
+// naming the problem, nothing on stdout, and leaves no file or folder behind.
+#include <catch2/catch.hpp>
+
+#ifdef HYPERGAS_CLI_PATH
+#include "cli/run_cli.hpp"
+
+using cli_test::Scratch;
+
+namespace {
+// Runs the command with `args` plus `--out <scratch>/out`, which must not exist afterwards.
+void expect_rejected(std::vector<std::string> args, const std::string& message_part) {
+  Scratch s("bad");
+  args.push_back("--out");
+  args.push_back((s.path() / "out").string());
+  const auto r = cli_test::run(args, s.path());
+  INFO("args: " << Catch::Detail::stringify(args) << "\nstderr: " << r.err);
+  CHECK(r.code == 2);
+  CHECK(r.err.find(message_part) != std::string::npos);
+  CHECK(r.out.empty());
+  CHECK(s.entries() == 0);  // no output folder, no staging folder, no stray file
+}
+}  // namespace
+
+TEST_CASE("run: dimension outside 1..6 is rejected", "[cli]") {
+  expect_rejected({"run", "--dim", "0"}, "--dim must be a dimension in 1..6, got 0");
+  expect_rejected({"run", "--dim", "7"}, "--dim must be a dimension in 1..6, got 7");
+  expect_rejected({"run", "--dim", "-3"}, "got -3");
+  expect_rejected({"run", "--dim", "three"}, "--dim");
+}
+
+TEST_CASE("run: fewer than two particles is rejected", "[cli]") {
+  expect_rejected({"run", "--n", "1"}, "--n must be at least 2 particles, got 1");
+  expect_rejected({"run", "--n", "0"}, "got 0");
+  expect_rejected({"run", "--n", "-5"}, "got -5");
+}
+
+TEST_CASE("run: non-finite or negative mass ratio is rejected", "[cli]") {
+  for (const char* m : {"-1", "0", "nan", "inf", "-inf"})
+    expect_rejected({"run", "--dim", "1", "--mass-ratio", m}, "--mass-ratio must be a finite");
+  expect_rejected({"run", "--fraction", "1.5"}, "--fraction must be in [0, 1]");
+}
+
+TEST_CASE("run: non-finite or negative temperature is rejected", "[cli]") {
+  for (const char* t : {"-1", "0", "nan", "inf"})
+    expect_rejected({"run", "--temperature", t}, "--temperature must be a finite kT > 0");
+}
+
+TEST_CASE("run: bad times are rejected", "[cli]") {
+  expect_rejected({"run", "--until", "0"}, "--until must be a finite time > 0");
+  expect_rejected({"run", "--until", "inf"}, "--until must be a finite time > 0");
+  expect_rejected({"run", "--every", "nan"}, "--every must be a finite interval > 0");
+}
+
+TEST_CASE("run: packing at or above the D-dimensional jamming density is rejected", "[cli]") {
+  // Jamming densities 1, 0.84, 0.64, 0.46, 0.31, 0.20 for D = 1..6 (see sim/options.cpp).
+  expect_rejected({"run", "--engine", "edmd", "--dim", "3", "--packing", "0.65"},
+                  "jamming density 0.64");
+  expect_rejected({"run", "--engine", "edmd", "--dim", "6", "--packing", "0.2"},
+                  "jamming density 0.2");
+  expect_rejected({"run", "--engine", "edmd", "--dim", "2", "--packing", "0.9"},
+                  "jamming density 0.84");
+  expect_rejected({"run", "--engine", "edmd", "--dim", "1", "--packing", "1"}, "jamming");
+  expect_rejected({"run", "--engine", "edmd", "--packing", "-0.1"}, "--packing must be");
+}
+
+TEST_CASE("run: unknown names are rejected", "[cli]") {
+  expect_rejected({"run", "--engine", "md"}, "unknown engine 'md'");
+  expect_rejected({"run", "--model", "soft"}, "unknown model 'soft'");
+  expect_rejected({"run", "--init", "nonsense"}, "unknown initial state 'nonsense'");
+  expect_rejected({"run", "--engine", "edmd", "--model", "maxwell"}, "needs --engine dsmc");
+  expect_rejected({"run", "--no-such-option", "1"}, "--no-such-option");
+  expect_rejected({"run", "--threads", "0"}, "--threads must be in 1..1024");
+}
+
+TEST_CASE("run: an unwritable output folder is rejected and nothing is created", "[cli]") {
+  // A path below a regular file cannot be created, even by root (ENOTDIR).
+  Scratch s("unwritable");
+  std::ofstream(s.path() / "plain-file") << "x";
+  const auto target = s.path() / "plain-file" / "sub" / "out";
+  const auto r = cli_test::run({"run", "--n", "100", "--until", "0.1", "--out", target.string()},
+                               s.path());
+  INFO("stderr: " << r.err);
+  CHECK(r.code == 2);
+  CHECK(r.err.find("is not writable") != std::string::npos);
+  CHECK(s.entries() == 1);  // only the plain file
+
+  // A missing parent chain is created and removed again when the folder turns out unusable:
+  // here the output "folder" is an existing regular file.
+  const auto r2 = cli_test::run(
+      {"run", "--n", "100", "--until", "0.1", "--out", (s.path() / "plain-file").string()},
+      s.path());
+  CHECK(r2.code == 2);
+  CHECK(r2.err.find("not a folder") != std::string::npos);
+  CHECK(s.entries() == 1);
+}
+
+TEST_CASE("bench and the default scene reject bad input too", "[cli]") {
+  Scratch s("bench");
+  auto r = cli_test::run({"bench", "--dim", "9"}, s.path());
+  CHECK(r.code == 2);
+  CHECK(r.err.find("--dim must be a dimension in 1..6, got 9") != std::string::npos);
+  r = cli_test::run({"bench", "--engine", "nope"}, s.path());
+  CHECK(r.code == 2);
+  CHECK(r.err.find("unknown engine 'nope'") != std::string::npos);
+  r = cli_test::run({"--n", "1", "--out", (s.path() / "res").string()}, s.path());
+  CHECK(r.code == 2);
+  CHECK(r.err.find("--n must be at least") != std::string::npos);
+  r = cli_test::run({"--until", "-1", "--out", (s.path() / "res").string()}, s.path());
+  CHECK(r.code == 2);
+  CHECK(s.entries() == 0);
+}
+#endif

@@ -1,0 +1,108 @@
+// CLI tests: happy paths of `hypergas run` and of the default scene. The files of the
+// contract (DESIGN.md section 5) exist with their columns, summary.json has its keys, --json
+// prints the same object as the last stdout line, and an interrupted run leaves nothing.
+#include <catch2/catch.hpp>
+
+#ifdef HYPERGAS_CLI_PATH
+#include "cli/run_cli.hpp"
+
+namespace {
+using cli_test::Scratch;
+
+// The header line of a CSV file.
+std::string header(const cli_test::fs::path& p) {
+  const auto l = cli_test::lines(cli_test::slurp(p));
+  return l.empty() ? std::string() : l.front();
+}
+
+bool starts_with(const std::string& s, const std::string& prefix) {
+  return s.compare(0, prefix.size(), prefix) == 0;
+}
+
+void check_summary_keys(const std::string& json, const std::vector<std::string>& keys) {
+  for (const auto& k : keys) {
+    INFO("key " << k << " in " << json);
+    CHECK(json.find("\"" + k + "\":") != std::string::npos);
+  }
+}
+
+const std::vector<std::string> common_keys{
+    "dim", "engine", "model", "n", "seed", "collisions", "wall_s", "collisions_per_s",
+    "energy_rel_drift", "momentum_drift"};
+}  // namespace
+
+TEST_CASE("run --engine dsmc writes the contract's files", "[cli]") {
+  Scratch s("run");
+  const auto out = s.path() / "nested" / "out";
+  const auto r = cli_test::run({"run", "--engine", "dsmc", "--dim", "3", "--n", "2000",
+                                "--until", "2", "--every", "0.5", "--seed", "7", "--out",
+                                out.string(), "--json"},
+                               s.path());
+  INFO("stderr: " << r.err << "\nstdout: " << r.out);
+  REQUIRE(r.code == 0);
+  CHECK(starts_with(header(out / "moments.csv"),
+                    "time,collisions_per_particle,m2,m4,kurtosis_x"));
+  CHECK(starts_with(header(out / "speed_histogram.csv"), "lo,hi,count,density,maxwell_density"));
+  // Rows at t = 0, 0.5, ..., 2: a header and five lines.
+  CHECK(cli_test::lines(cli_test::slurp(out / "moments.csv")).size() == 6);
+  const std::string summary = cli_test::slurp(out / "summary.json");
+  check_summary_keys(summary, common_keys);
+  CHECK(summary.find("\"engine\": \"dsmc\"") != std::string::npos);
+  CHECK(summary.find("\"dim\": 3") != std::string::npos);
+  // --json: the summary object is the last line of stdout.
+  const auto lines = cli_test::lines(r.out);
+  REQUIRE(!lines.empty());
+  CHECK(lines.back() + "\n" == summary);
+  // No staging folder is left in the output folder.
+  for (const auto& e : cli_test::fs::directory_iterator(out))
+    CHECK(e.path().filename().string().rfind(".hypergas-staging", 0) != 0);
+}
+
+TEST_CASE("run in 1D with two masses, and with Maxwell molecules in 5D", "[cli]") {
+  Scratch s("run");
+  auto r = cli_test::run({"run", "--dim", "1", "--n", "1000", "--mass-ratio", "3", "--until",
+                          "1", "--out", (s.path() / "a").string()},
+                         s.path());
+  CHECK(r.code == 0);
+  CHECK(cli_test::fs::exists(s.path() / "a" / "summary.json"));
+  r = cli_test::run({"run", "--dim", "5", "--n", "1000", "--model", "maxwell", "--init", "bkw",
+                     "--until", "1", "--out", (s.path() / "b").string(), "--json"},
+                    s.path());
+  CHECK(r.code == 0);
+  CHECK(r.out.find("\"model\": \"maxwell\"") != std::string::npos);
+}
+
+TEST_CASE("an interrupted run leaves no files behind", "[cli]") {
+  Scratch s("interrupt");
+  const auto out = s.path() / "out";
+  // Long enough (about a minute) that SIGINT after 1.5 s arrives mid-run.
+  const auto r = cli_test::run({"run", "--dim", "3", "--n", "200000", "--until", "2000",
+                                "--every", "1", "--out", out.string()},
+                               s.path(), 1.5);
+  INFO("stderr: " << r.err);
+  CHECK(r.code == 130);
+  CHECK(r.err.find("interrupted") != std::string::npos);
+  CHECK_FALSE(cli_test::fs::exists(out));
+  CHECK(s.entries() == 0);
+}
+
+TEST_CASE("the default scene prints one row per D and writes CSV under --out", "[cli]") {
+  Scratch s("scene");
+  const auto out = s.path() / "results";
+  const auto r = cli_test::run({"--out", out.string(), "--n", "4000", "--until", "4"}, s.path());
+  INFO("stderr: " << r.err);
+  REQUIRE(r.code == 0);
+  const auto lines = cli_test::lines(r.out);
+  for (int d = 1; d <= 6; ++d) {
+    const std::string prefix = {' ', static_cast<char>('0' + d), ' ', ' '};
+    bool row = false;
+    for (const auto& l : lines) row = row || starts_with(l, prefix);
+    INFO("row for D = " << d);
+    CHECK(row);
+    CHECK(starts_with(header(out / ("relaxation_D" + std::to_string(d) + ".csv")),
+                      "time,collisions_per_particle,m2,m4,kurtosis_x"));
+    CHECK(cli_test::fs::exists(out / ("speed_histogram_D" + std::to_string(d) + ".csv")));
+  }
+  CHECK(starts_with(header(out / "summary.csv"), "dim,n,mass_ratio"));
+}
+#endif

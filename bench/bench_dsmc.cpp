@@ -24,13 +24,20 @@ int main(int argc, char** argv) {
   try {
     for (int i = 1; i + 1 < argc; i += 2) {
       const std::string k = argv[i], v = argv[i + 1];
-      if (k == "--dims") o.dims = parse_list<int>(v);
-      else if (k == "--ns") o.ns = parse_list<std::size_t>(v);
-      else if (k == "--reps") o.reps = std::stoi(v);
-      else if (k == "--min-collisions") o.min_collisions = std::stod(v);
-      else if (k == "--threads") o.threads = std::stoi(v);
-      else if (k == "--model") o.model = hypergas::dsmc::parse_model(v);
-      else throw hypergas::InvalidInput("unknown option " + k);
+      if (k == "--dims")
+        o.dims = parse_list<int>(v);
+      else if (k == "--ns")
+        o.ns = parse_list<std::size_t>(v);
+      else if (k == "--reps")
+        o.reps = std::stoi(v);
+      else if (k == "--min-collisions")
+        o.min_collisions = std::stod(v);
+      else if (k == "--threads")
+        o.threads = std::stoi(v);
+      else if (k == "--model")
+        o.model = hypergas::dsmc::parse_model(v);
+      else
+        throw hypergas::InvalidInput("unknown option " + k);
     }
     hypergas::bench::run_dsmc_bench(std::cout, o);
   } catch (const std::exception& e) {

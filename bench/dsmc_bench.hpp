@@ -30,8 +30,8 @@ namespace hypergas::bench {
 struct DsmcBenchOptions {
   std::vector<int> dims = {1, 2, 3, 4, 5, 6};
   std::vector<std::size_t> ns = {10000, 1000000, 10000000};
-  int reps = 3;                         ///< runs per point; the median is reported
-  double min_collisions = 5e6;          ///< accepted collisions per timed run
+  int reps = 3;                 ///< runs per point; the median is reported
+  double min_collisions = 5e6;  ///< accepted collisions per timed run
   dsmc::ModelKind model = dsmc::ModelKind::hs;
   std::uint64_t seed = 1;
   int threads = 1;  ///< > 1: also time that many independent replicas run concurrently
@@ -111,9 +111,12 @@ DsmcPoint time_engine(std::size_t n, double min_collisions, std::uint64_t seed) 
 template <int D>
 DsmcPoint time_model(dsmc::ModelKind m, std::size_t n, double min_coll, std::uint64_t seed) {
   switch (m) {
-    case dsmc::ModelKind::maxwell: return time_engine<D, dsmc::MaxwellMolecules>(n, min_coll, seed);
-    case dsmc::ModelKind::vhs: return time_engine<D, dsmc::VariableHardSpheres>(n, min_coll, seed);
-    default: return time_engine<D, dsmc::HardSpheres>(n, min_coll, seed);
+    case dsmc::ModelKind::maxwell:
+      return time_engine<D, dsmc::MaxwellMolecules>(n, min_coll, seed);
+    case dsmc::ModelKind::vhs:
+      return time_engine<D, dsmc::VariableHardSpheres>(n, min_coll, seed);
+    default:
+      return time_engine<D, dsmc::HardSpheres>(n, min_coll, seed);
   }
 }
 
@@ -170,7 +173,8 @@ void bench_point(std::ostream& out, const DsmcBenchOptions& o, std::size_t n) {
 /// acceptance, bytes_per_particle, probe_pair_updates_per_s, probe_ratio.
 inline void run_dsmc_bench(std::ostream& out, const DsmcBenchOptions& o = {}) {
   for (std::size_t n : o.ns)
-    for (int d : o.dims) for_each_dim([&](auto tag) {
+    for (int d : o.dims)
+      for_each_dim([&](auto tag) {
         constexpr int D = decltype(tag)::value;
         if (D == d) detail::bench_point<D>(out, o, n);
       });

@@ -68,9 +68,9 @@ inline std::string_view to_string(InitialState s) {
 struct InitialParams {
   double kT = 1.0;  ///< temperature of every population, except in `two-temp`
   std::array<double, 2> kT_species = {1.5, 0.5};  ///< `two-temp`: kT of populations 0, 1
-  double fraction = 0.5;    ///< number fraction of population (species) 1, in [0, 1]
-  double mass_ratio = 1.0;  ///< species scenes: mass of species 1 / mass of species 0
-  double anisotropy = 4.0;  ///< `bimaxwell`: T_x / T_perp (> 0)
+  double fraction = 0.5;      ///< number fraction of population (species) 1, in [0, 1]
+  double mass_ratio = 1.0;    ///< species scenes: mass of species 1 / mass of species 0
+  double anisotropy = 4.0;    ///< `bimaxwell`: T_x / T_perp (> 0)
   double beam_spread = 0.05;  ///< `beams`: thermal kT per beam / kinetic kT of the drift (>= 0)
 };
 
@@ -146,8 +146,9 @@ void delta_shell(Particles<D, F>& ps, std::size_t b, std::size_t e, Rng& rng) {
   const std::size_t cnt = e - b;
   if (cnt == 0) return;
   if (cnt % 2 == 1 && (D == 1 || cnt < 3))
-    throw InvalidInput("delta state: in D = 1 (or with 1 particle) each population needs an "
-                       "even number of particles for zero momentum at equal speeds");
+    throw InvalidInput(
+        "delta state: in D = 1 (or with 1 particle) each population needs an "
+        "even number of particles for zero momentum at equal speeds");
   const std::size_t pairs_end = (cnt % 2 == 1) ? e - 3 : e;
   for (std::size_t i = b; i < pairs_end; i += 2) {
     const Vec<D> u = unit_vector<D>(rng);
@@ -198,7 +199,8 @@ void initialize_velocities(Particles<D, F>& ps, InitialState s, Rng& rng,
     if (s == InitialState::delta) {
       detail::delta_shell(ps, b, e, rng);
     } else {
-      for (std::size_t i = b; i < e; ++i) ps.velocity(i) = detail::raw_velocity<D>(s, i - b, rng, p);
+      for (std::size_t i = b; i < e; ++i)
+        ps.velocity(i) = detail::raw_velocity<D>(s, i - b, rng, p);
       // Shift to zero population momentum (mass-weighted mean velocity).
       Vec<D> mom = Vec<D>::Zero();
       double mass = 0.0;

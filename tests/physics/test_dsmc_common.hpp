@@ -36,7 +36,9 @@ inline std::pair<double, double> mean_se(const std::vector<double>& x) {
 }
 
 /// Two-sided Student-t threshold with false-failure probability p for R replicas.
-inline double t_threshold(double p, int R) { return gsl_cdf_tdist_Qinv(0.5 * p, R - 1.0); }
+inline double t_threshold(double p, int R) {
+  return gsl_cdf_tdist_Qinv(0.5 * p, R - 1.0);
+}
 
 /// Mean of |v|^(2k) over particles [b, e).
 template <int D, hypergas::Features F>
@@ -49,7 +51,8 @@ double moment(const hypergas::Particles<D, F>& ps, int k, std::size_t b = 0, std
 
 /// Kolmogorov-Smirnov distance of sample x from `cdf`, and its p-value (asymptotic
 /// Kolmogorov law with Stephens' finite-n correction).
-inline std::pair<double, double> ks(std::vector<double> x, const std::function<double(double)>& cdf) {
+inline std::pair<double, double> ks(std::vector<double> x,
+                                    const std::function<double(double)>& cdf) {
   std::sort(x.begin(), x.end());
   const double n = static_cast<double>(x.size());
   double d = 0.0;
@@ -93,8 +96,10 @@ inline double fit_exponential_rate(const std::vector<double>& t, const std::vect
   const double g = 0.5 * (std::sqrt(5.0) - 1.0);
   double a = lo, b = hi, c = b - g * (b - a), d = a + g * (b - a);
   for (int it = 0; it < 200; ++it) {
-    if (resid(c) < resid(d)) b = d;
-    else a = c;
+    if (resid(c) < resid(d))
+      b = d;
+    else
+      a = c;
     c = b - g * (b - a);
     d = a + g * (b - a);
   }

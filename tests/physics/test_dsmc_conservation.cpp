@@ -43,7 +43,8 @@ void all_models(double target) {
     if (r == 0) d[0] = run_collisions<D, HardSpheres>(target, InitialState::delta);
     if (r == 1) d[1] = run_collisions<D, VariableHardSpheres>(target, InitialState::cube);
     if (r == 2)
-      d[2] = run_collisions<D, MaxwellMolecules, Features{.species = true}>(target, InitialState::two_temp);
+      d[2] = run_collisions<D, MaxwellMolecules, Features{.species = true}>(target,
+                                                                            InitialState::two_temp);
   });
   for (const auto& x : d) {
     INFO("D = " << D << ", collisions " << x.collisions << ", momentum drift " << x.momentum
@@ -55,8 +56,8 @@ void all_models(double target) {
 }
 }  // namespace
 
-TEMPLATE_TEST_CASE_SIG("DSMC conservation over 1e6 collisions", "[dsmc][physics]", ((int D), D),
-                       1, 2, 3, 4, 5, 6) {
+TEMPLATE_TEST_CASE_SIG("DSMC conservation over 1e6 collisions", "[dsmc][physics]", ((int D), D), 1,
+                       2, 3, 4, 5, 6) {
   all_models<D>(1e6);
 }
 

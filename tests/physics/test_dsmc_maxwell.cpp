@@ -72,8 +72,8 @@ TEST_CASE("Maxwell molecules: BKW fourth moment in 3D and 5D", "[dsmc][physics]"
     });
     for (std::size_t k = 0; k < times.size(); ++k) {
       const auto [m, se] = mean_se(m4[k]);
-      INFO("D = " << D << ", t = " << times[k] << ": m4 = " << m << " +- " << se
-                  << ", BKW " << bkw_m4(D, times[k]));
+      INFO("D = " << D << ", t = " << times[k] << ": m4 = " << m << " +- " << se << ", BKW "
+                  << bkw_m4(D, times[k]));
       REQUIRE(std::abs(m - bkw_m4(D, times[k])) < t_threshold(1e-5, R) * se);
     }
   };

@@ -45,8 +45,8 @@ struct Recorder : Observer {
 };
 }  // namespace
 
-TEMPLATE_TEST_CASE_SIG("DSMC conserves momentum and energy to round-off", "[dsmc]", ((int D), D),
-                       1, 2, 3, 4, 5, 6) {
+TEMPLATE_TEST_CASE_SIG("DSMC conserves momentum and energy to round-off", "[dsmc]", ((int D), D), 1,
+                       2, 3, 4, 5, 6) {
   for (Scheme s : {Scheme::exact, Scheme::ntc}) {
     check_conservation<D, HardSpheres>(s, InitialState::cube);
     check_conservation<D, MaxwellMolecules>(s, InitialState::beams);
@@ -100,7 +100,8 @@ TEST_CASE("DSMC runs are reproducible from the seed", "[dsmc]") {
   b.run_until(1.0);
   b.run_until(3.0);  // epochs end at the requested times: same calls, same stream
   REQUIRE(a.collisions() == b.collisions());
-  for (std::size_t i = 0; i < cfg.n; ++i) REQUIRE(a.particles().velocity(i) == b.particles().velocity(i));
+  for (std::size_t i = 0; i < cfg.n; ++i)
+    REQUIRE(a.particles().velocity(i) == b.particles().velocity(i));
   cfg.seed = 6;
   Engine<4, HardSpheres> c(cfg);
   c.run_until(3.0);

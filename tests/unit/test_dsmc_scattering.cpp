@@ -51,7 +51,8 @@ TEMPLATE_TEST_CASE_SIG("isotropic directions: unit, zero mean, covariance I/D", 
   mean /= n_samples;
   diag /= n_samples;
   const double sd_mean = std::sqrt(1.0 / (D * double(n_samples)));
-  const double sd_diag = std::sqrt(std::max(3.0 / (D * (D + 2.0)) - 1.0 / (D * D), 1e-30) / n_samples);
+  const double sd_diag =
+      std::sqrt(std::max(3.0 / (D * (D + 2.0)) - 1.0 / (D * D), 1e-30) / n_samples);
   for (int k = 0; k < D; ++k) {
     REQUIRE(std::abs(mean[k]) < 5 * sd_mean);
     if (D > 1) REQUIRE(std::abs(diag[k] - 1.0 / D) < 5 * sd_diag);
@@ -94,7 +95,8 @@ TEMPLATE_TEST_CASE_SIG("hard-sphere deflection: |g| kept, deflection angle law",
     s.push_back(0.5 * (1.0 + c));
     perp += gp / gn - c * gh;
   }
-  const double p = ks_pvalue(s, [](double x) { return std::pow(std::clamp(x, 0.0, 1.0), 0.5 * (D - 1)); });
+  const double p =
+      ks_pvalue(s, [](double x) { return std::pow(std::clamp(x, 0.0, 1.0), 0.5 * (D - 1)); });
   REQUIRE(p > 1e-4);
   perp /= n_samples;
   for (int k = 0; k < D; ++k) REQUIRE(std::abs(perp[k]) < 5.0 / std::sqrt(double(n_samples)));
@@ -134,13 +136,15 @@ TEST_CASE("models: names, exponents, acceptance rules", "[dsmc]") {
 
 TEST_CASE("time unit: <|g|^a> of a Maxwellian pair", "[dsmc]") {
   // 3D, m = kT = 1: <|g|> = 4/sqrt(pi) (e.g. Chapman & Cowling), <|g|^2> = 2 D kT/m.
-  REQUIRE(mean_relative_speed_power(3, 1.0, 2.0) == Approx(4.0 / std::sqrt(std::numbers::pi)).epsilon(1e-14));
+  REQUIRE(mean_relative_speed_power(3, 1.0, 2.0) ==
+          Approx(4.0 / std::sqrt(std::numbers::pi)).epsilon(1e-14));
   for (int d = 1; d <= 6; ++d) {
     REQUIRE(mean_relative_speed_power(d, 2.0, 2.0) == Approx(2.0 * d).epsilon(1e-13));
     REQUIRE(mean_relative_speed_power(d, 0.0, 7.0) == Approx(1.0).epsilon(1e-14));
   }
   // 2D: |g| Rayleigh with sigma^2 = 2: mean sigma sqrt(pi/2) = sqrt(pi).
-  REQUIRE(mean_relative_speed_power(2, 1.0, 2.0) == Approx(std::sqrt(std::numbers::pi)).epsilon(1e-14));
+  REQUIRE(mean_relative_speed_power(2, 1.0, 2.0) ==
+          Approx(std::sqrt(std::numbers::pi)).epsilon(1e-14));
 }
 
 TEST_CASE("time unit: rate constant from the conserved energy, one and two species", "[dsmc]") {

@@ -57,8 +57,8 @@ TEMPLATE_TEST_CASE_SIG("initial states: zero momentum and exact energy in every 
     REQUIRE(mix.species(1000) == 1);
     REQUIRE(mix.mass(1000) == 3.0);
     REQUIRE(second_population_size<Features{.species = true}>(1001, s, prm) == 300);
-    check_conserved(mix, 0.5 * D * 1001 * initial_temperature<Features{.species = true}>(
-                                              1001, s, prm));
+    check_conserved(mix,
+                    0.5 * D * 1001 * initial_temperature<Features{.species = true}>(1001, s, prm));
   }
 }
 
@@ -74,8 +74,8 @@ TEMPLATE_TEST_CASE_SIG("delta shell: all speeds equal, odd counts closed", "[ini
   }
 }
 
-TEMPLATE_TEST_CASE_SIG("BKW initial state has the BKW fourth moment", "[initial]", ((int D), D),
-                       1, 2, 3, 4, 5, 6) {
+TEMPLATE_TEST_CASE_SIG("BKW initial state has the BKW fourth moment", "[initial]", ((int D), D), 1,
+                       2, 3, 4, 5, 6) {
   // f0 ~ |v|^2 exp(-v^2/(2K)), K = D/(D+2) (kT = m = 1): <v^4> = D(D+2) K (2 - K)
   // = D^2 (D+4)/(D+2) (BKW: Bobylev 1976; Krook & Wu 1977, generalised to D dims).
   // The sample m4 of 2e5 particles has standard error sd(v^4)/sqrt(n) (estimated from the

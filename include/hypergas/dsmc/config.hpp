@@ -26,21 +26,23 @@ inline Scheme parse_scheme(std::string_view name) {
 }
 
 /// The command-line name of a scheme.
-inline std::string_view to_string(Scheme s) { return s == Scheme::exact ? "exact" : "ntc"; }
+inline std::string_view to_string(Scheme s) {
+  return s == Scheme::exact ? "exact" : "ntc";
+}
 
 /// A DSMC run. Time in equilibrium mean collision times; temperatures in energy units with
 /// the mass of species 0 equal to 1. Two species: set `initial.mass_ratio` (m1/m0),
 /// `initial.fraction` (number fraction of species 1) and, for different initial temperatures,
 /// `init = two_temp` with `initial.kT_species`; the engine needs Features{.species = true}.
 struct Config {
-  std::size_t n = 100000;            ///< number of particles (2 .. 2^32 - 1)
-  ModelKind model = ModelKind::hs;   ///< which Model type the caller instantiates
-  double vhs_exponent = 0.5;         ///< a in the VHS rate |g|^a, 0 <= a <= 1
-  Scheme scheme = Scheme::exact;     ///< exact Kac process or NTC
-  double dt = 0.01;                  ///< NTC time step (mean collision times)
-  std::uint64_t seed = 1;            ///< all randomness derives from it
+  std::size_t n = 100000;                     ///< number of particles (2 .. 2^32 - 1)
+  ModelKind model = ModelKind::hs;            ///< which Model type the caller instantiates
+  double vhs_exponent = 0.5;                  ///< a in the VHS rate |g|^a, 0 <= a <= 1
+  Scheme scheme = Scheme::exact;              ///< exact Kac process or NTC
+  double dt = 0.01;                           ///< NTC time step (mean collision times)
+  std::uint64_t seed = 1;                     ///< all randomness derives from it
   InitialState init = InitialState::maxwell;  ///< initial velocity state
-  InitialParams initial;             ///< kT, per-species kT, fraction, mass ratio, ...
+  InitialParams initial;                      ///< kT, per-species kT, fraction, mass ratio, ...
 };
 
 /// Throws InvalidInput if `c` cannot be run.

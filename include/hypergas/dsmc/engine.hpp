@@ -67,8 +67,8 @@ namespace hypergas::dsmc {
 /// The DSMC engine for dimension D, collision model `Model`, particle features F (Features{}
 /// or Features{.species = true}). Time in equilibrium mean collision times.
 template <int D, class Model, Features F = Features{}>
-  requires Dimension<D> && CollisionModel<Model> && (!F.positions) && (!F.masses) && (!F.radii)
-class Engine {
+requires Dimension<D> && CollisionModel<Model> &&(!F.positions) && (!F.masses) &&
+    (!F.radii) class Engine {
  public:
   using ParticlesT = Particles<D, F>;
   static constexpr int stride = ParticlesT::stride;
@@ -81,8 +81,7 @@ class Engine {
   /// Starts from the given particles (velocities in units where the species-0 mass is 1);
   /// cfg.n and cfg.init are ignored. Total momentum should be zero (see time_unit.hpp).
   Engine(const Config& cfg, ParticlesT particles)
-      : cfg_(cfg), p_(std::move(particles)), model_(make_model(cfg)),
-        rng_(Rng(cfg.seed).split(2)) {
+      : cfg_(cfg), p_(std::move(particles)), model_(make_model(cfg)), rng_(Rng(cfg.seed).split(2)) {
     validate(cfg_);
     n_ = static_cast<std::uint32_t>(p_.size());
     if (p_.size() < 2 || p_.size() > 0xffffffffULL)
@@ -157,8 +156,10 @@ class Engine {
     return p;
   }
   static Model make_model(const Config& cfg) {
-    if constexpr (std::is_same_v<Model, VariableHardSpheres>) return Model(cfg.vhs_exponent);
-    else return Model{};
+    if constexpr (std::is_same_v<Model, VariableHardSpheres>)
+      return Model(cfg.vhs_exponent);
+    else
+      return Model{};
   }
 
   /// Unbiased integer in [0, range) from 32 random bits (Lemire's multiply-shift with
@@ -202,8 +203,8 @@ class Engine {
     set_lambda();
   }
   void set_lambda() {
-    const double ga = model_.exponent() == 1.0 ? bound_.bound()
-                                               : std::pow(bound_.bound(), model_.exponent());
+    const double ga =
+        model_.exponent() == 1.0 ? bound_.bound() : std::pow(bound_.bound(), model_.exponent());
     lambda_ = 0.5 * n_ * c_ * ga;
   }
 
@@ -259,8 +260,10 @@ class Engine {
 
   /// Advances to t_end with the configured scheme.
   void advance_to(double t_end) {
-    if (cfg_.scheme == Scheme::exact) advance_exact(t_end);
-    else advance_ntc(t_end);
+    if (cfg_.scheme == Scheme::exact)
+      advance_exact(t_end);
+    else
+      advance_ntc(t_end);
   }
 
   void advance_exact(double t_end) {

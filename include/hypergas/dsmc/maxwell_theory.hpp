@@ -27,7 +27,9 @@ namespace hypergas::dsmc {
 
 /// Relaxation rate of the fourth moment <|v|^4> of Maxwell molecules with isotropic
 /// scattering in D dims, per mean collision time: (D - 1) / (2 D).
-constexpr double maxwell_m4_rate(int d) { return (d - 1.0) / (2.0 * d); }
+constexpr double maxwell_m4_rate(int d) {
+  return (d - 1.0) / (2.0 * d);
+}
 
 /// BKW parameter K(t) from K0 = D/(D+2) (kT = m = 1), t in mean collision times.
 inline double bkw_K(int d, double t) {

@@ -69,7 +69,7 @@ class ClassEngine {
       throw InvalidInput("DSMC: the number of particles must be in [2, 2^32 - 1]");
     n_ = static_cast<std::uint32_t>(p_.size());
     a_ = model_.exponent();
-    c_ = rate_constant(p_, a_);
+    c_ = dsmc::rate_constant(p_, a_);
     double e2 = 0.0, wmax = 0.0;  // sum m |v|^2 = 2 E, largest inverse mass
     for (std::size_t i = 0; i < p_.size(); ++i) {
       e2 += p_.velocity(i).squaredNorm() / p_.inv_mass(i);

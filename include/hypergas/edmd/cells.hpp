@@ -1,0 +1,151 @@
+// hypergas/edmd/cells.hpp -- the cell grid of the periodic box: linked cell lists and the
+// neighbour-cell stencil with periodic shifts.
+//
+// The cube of side L is cut into m cells per side of width w = L/m >= s_max (the largest
+// contact distance), so two spheres in contact are in the same or adjacent cells. While a
+// particle stays in its cell (cell crossings are events) the only periodic image of a
+// neighbour it can touch is fixed by the cell offset:
+//  * m >= 3: the stencil is the 3^D cells at offsets -1, 0, 1 per axis; crossing the box
+//    edge adds a shift of +-L. The image is the "cell image", not the minimum image of the
+//    current positions (the two differ when L < 4w, where the minimum image would miss
+//    collisions).
+//  * m = 2 (2 sigma <= L < 3 sigma): the offsets -1 and +1 are the same cell, so the stencil
+//    is the 2^D distinct cells and, on an axis where the cells differ, both images
+//    (d and d -+ L) can touch within the cell window: the engine tries both.
+// m = 1 cannot occur: the engine requires L >= 2 s_max.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "hypergas/error.hpp"
+#include "hypergas/vec.hpp"
+
+namespace hypergas::edmd {
+
+/// Linked cell lists on an m^D grid (cell index = sum_k c_k m^k).
+template <int D>
+class Cells {
+ public:
+  static constexpr std::int32_t none = -1;
+
+  /// Grid for a box of side `L` with cells at least `min_width` wide, for `n` particles.
+  void build(double L, double min_width, std::size_t n) {
+    m_ = static_cast<int>(std::floor(L / min_width * (1.0 - 1e-12)));
+    if (m_ < 2)
+      throw InvalidInput("box side " + std::to_string(L) + " is below two contact distances (" +
+                         std::to_string(min_width) + "): enlarge N or lower the packing");
+    // Cap the number of cells (memory): at most ~2 cells per particle.
+    while (m_ > 2 && std::pow(static_cast<double>(m_), D) > 2.0 * static_cast<double>(n) + 64.0)
+      --m_;
+    L_ = L;
+    w_ = L / m_;
+    ncells_ = 1;
+    for (int k = 0; k < D; ++k) ncells_ *= static_cast<std::size_t>(m_);
+    head_.assign(ncells_, none);
+    next_.assign(n, none);
+    prev_.assign(n, none);
+    cell_.assign(n, 0);
+    // Stencil offsets: {-1,0,1}^D for m >= 3, {0,1}^D (distinct cells) for m = 2.
+    const int lo = (m_ >= 3) ? -1 : 0;
+    const int span = (m_ >= 3) ? 3 : 2;
+    offsets_.clear();
+    int total = 1;
+    for (int k = 0; k < D; ++k) total *= span;
+    for (int q = 0; q < total; ++q) {
+      std::array<int, D> o{};
+      int r = q;
+      for (int k = 0; k < D; ++k) {
+        o[k] = lo + r % span;
+        r /= span;
+      }
+      offsets_.push_back(o);
+    }
+  }
+
+  int per_side() const { return m_; }
+  double width() const { return w_; }
+  std::size_t count() const { return ncells_; }
+
+  /// Cell coordinate along one axis of position coordinate x in [0, L] (clamped).
+  int coord(double x) const {
+    int c = static_cast<int>(std::floor(x / w_));
+    return c < 0 ? 0 : (c >= m_ ? m_ - 1 : c);
+  }
+  /// Cell index from per-axis coordinates.
+  std::uint32_t index(const std::array<int, D>& c) const {
+    std::uint32_t idx = 0;
+    for (int k = D - 1; k >= 0; --k) idx = idx * static_cast<std::uint32_t>(m_) + c[k];
+    return idx;
+  }
+  /// Per-axis coordinates of cell `idx`.
+  std::array<int, D> coords(std::uint32_t idx) const {
+    std::array<int, D> c{};
+    for (int k = 0; k < D; ++k) {
+      c[k] = static_cast<int>(idx % static_cast<std::uint32_t>(m_));
+      idx /= static_cast<std::uint32_t>(m_);
+    }
+    return c;
+  }
+
+  std::uint32_t cell_of(std::uint32_t i) const { return cell_[i]; }
+  std::int32_t head(std::uint32_t c) const { return head_[c]; }
+  std::int32_t next(std::uint32_t i) const { return next_[i]; }
+
+  void insert(std::uint32_t i, std::uint32_t c) {
+    cell_[i] = c;
+    prev_[i] = none;
+    next_[i] = head_[c];
+    if (head_[c] != none) prev_[head_[c]] = static_cast<std::int32_t>(i);
+    head_[c] = static_cast<std::int32_t>(i);
+  }
+  void remove(std::uint32_t i) {
+    const std::uint32_t c = cell_[i];
+    if (prev_[i] != none) next_[prev_[i]] = next_[i];
+    else head_[c] = next_[i];
+    if (next_[i] != none) prev_[next_[i]] = prev_[i];
+  }
+
+  /// Calls f(cell, shift) for every stencil cell of home cell `h` (coordinates), where shift
+  /// (a Vec<D>, length) is added to a neighbour's position to get its cell image. When
+  /// `axis >= 0` only the cells at offset `dir` along `axis` are visited (the slab a particle
+  /// entering `h` along that axis newly sees; m >= 3 only).
+  template <class Fn>
+  void for_each_neighbor(const std::array<int, D>& h, Fn&& f, int axis = -1, int dir = 0) const {
+    for (const auto& o : offsets_) {
+      if (axis >= 0 && o[axis] != dir) continue;
+      std::array<int, D> c;
+      Vec<D> shift = Vec<D>::Zero();
+      for (int k = 0; k < D; ++k) {
+        int ck = h[k] + o[k];
+        if (ck >= m_) {
+          ck -= m_;
+          shift[k] = L_;
+        } else if (ck < 0) {
+          ck += m_;
+          shift[k] = -L_;
+        }
+        c[k] = ck;
+      }
+      f(index(c), shift);
+    }
+  }
+
+  /// Bytes per particle of the lists (cell id, next, prev) plus the cell heads.
+  double bytes_per_particle(std::size_t n) const {
+    return 3.0 * sizeof(std::int32_t) +
+           static_cast<double>(ncells_ * sizeof(std::int32_t)) / static_cast<double>(n);
+  }
+
+ private:
+  int m_ = 0;
+  double L_ = 0.0, w_ = 0.0;
+  std::size_t ncells_ = 0;
+  std::vector<std::int32_t> head_, next_, prev_;
+  std::vector<std::uint32_t> cell_;
+  std::vector<std::array<int, D>> offsets_;
+};
+
+}  // namespace hypergas::edmd

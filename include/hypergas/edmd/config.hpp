@@ -1,0 +1,30 @@
+// hypergas/edmd/config.hpp -- what an event-driven MD run is: N, packing, seed, initial state.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "hypergas/initial_state.hpp"
+
+namespace hypergas::edmd {
+
+/// Parameters of an EDMD run. Units: sigma (diameter of species 0) = 1, m (mass of species
+/// 0) = 1, kT = init_params.kT (default 1); time in sigma sqrt(m/kT).
+struct Config {
+  std::size_t n = 1000;       ///< number of particles (>= 2)
+  double packing = 0.1;       ///< target packing fraction eta = sum_i v_D(sigma_i/2) / L^D
+  std::uint64_t seed = 1;     ///< seed of the positions and velocities
+  InitialState init = InitialState::maxwell;  ///< initial velocity state (initial_state.hpp)
+  InitialParams init_params{};  ///< kT, mixture fraction and mass ratio of the state
+  double size_ratio = 1.0;    ///< radii scenes: diameter of population 1 (the last
+                              ///< round(fraction n) particles) over that of population 0
+  bool debug_overlap = false;  ///< check all pairs for overlap after every event (O(N^2))
+  /// Lubachevsky–Stillinger compression, used when the lattice cannot hold the target
+  /// diameters: relative diameter growth per unit time, and a collision budget after which
+  /// the compression gives up (jammed) with InvalidInput.
+  double growth_rate = 0.05;
+  std::uint64_t max_compression_collisions = 200000000;
+  double compression_stage = 0.5;  ///< time between velocity rescalings while compressing
+};
+
+}  // namespace hypergas::edmd

@@ -1,0 +1,462 @@
+// hypergas/edmd/engine.hpp -- event-driven molecular dynamics of hard spheres in D dims.
+//
+// Public API (what the command line calls):
+//
+//   edmd::Config cfg;  cfg.n = 32000; cfg.packing = 0.26; cfg.seed = 7;
+//   cfg.init = InitialState::maxwell;  cfg.debug_overlap = false;
+//   edmd::Engine<3> e(cfg);              // lattice start (+ LS compression if needed)
+//   e.run_until(t, &observer, every);    // observer called at t0, t0+every, ... <= t
+//   e.time(); e.collisions();            // time in sigma sqrt(m/kT); collision count
+//   e.pressure_Z();                      // PV/(N kT) from the collision virial
+//   e.collision_rate();                  // collisions per particle per unit time
+//   e.mean_free_time();                  // 1 / collision_rate
+//   e.temperature();  e.particles();  e.bytes_per_particle();
+//   e.reset_observables();               // start a new measurement window now
+//   edmd::jamming_packing(D)             // (box.hpp) largest --packing accepted
+//
+// Engine<D, F>: F must have positions; F.species (or F.masses) gives two masses, F.radii
+// two sizes (Config::size_ratio). Units: sigma = 1, m = 1, kT = 1 by default.
+//
+// Algorithm: each particle keeps a local clock (its position is stored at the time of its
+// last event), one predicted pair event (time, partner, partner's event counter) and one
+// cell-crossing time; the earlier of the two is its key in an indexed binary heap. A pair
+// event is valid only if the partner's counter is unchanged (lazy invalidation); an invalid
+// one triggers a new prediction. Crossing a cell keeps a still-valid pair event and scans
+// only the newly adjacent slab of cells. An event costs O(neighbours + log N).
+//
+// Correctness argument for one event per particle: if i and j will collide next among all
+// their events, the one of them whose trajectory was predicted last scanned the other with
+// both current trajectories, so its key is at most that collision time.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "hypergas/collision.hpp"
+#include "hypergas/edmd/box.hpp"
+#include "hypergas/edmd/cells.hpp"
+#include "hypergas/edmd/config.hpp"
+#include "hypergas/edmd/event_queue.hpp"
+#include "hypergas/edmd/lattice.hpp"
+#include "hypergas/edmd/pair_time.hpp"
+#include "hypergas/initial_state.hpp"
+#include "hypergas/observer.hpp"
+#include "hypergas/particles.hpp"
+
+namespace hypergas::edmd {
+
+template <int D, Features F>
+class Engine;
+
+template <int D, Features F>
+void compress(Engine<D, F>& e, double target_scale, const Config& cfg);
+
+/// Hard-sphere EDMD engine (see the file comment). D in 1..6.
+template <int D, Features F = Features{.positions = true}>
+class Engine {
+  static_assert(F.positions, "the EDMD engine needs Features{.positions = true}");
+
+ public:
+  using Store = Particles<D, F>;
+
+  /// Places cfg.n particles on a lattice at packing cfg.packing, draws velocities in state
+  /// cfg.init, compresses (Lubachevsky–Stillinger) if the lattice is too tight, and predicts
+  /// all events. Throws InvalidInput for bad parameters or a box below 2 diameters.
+  explicit Engine(const Config& cfg) : debug_(cfg.debug_overlap) {
+    if (cfg.n < 2) throw InvalidInput("EDMD needs at least 2 particles");
+    if (cfg.n > 0xFFFFFFF0ull) throw InvalidInput("EDMD: too many particles");
+    if constexpr (D >= 2) check_packing(D, cfg.packing);
+    else if (!(cfg.packing > 0.0 && cfg.packing < 1.0))
+      throw InvalidInput("1D packing fraction must be in (0, 1)");
+    if (!(cfg.size_ratio > 0.0 && std::isfinite(cfg.size_ratio)))
+      throw InvalidInput("size ratio must be finite and > 0");
+    const std::size_t n = cfg.n;
+    p_.resize(n);
+    Rng rng(cfg.seed, 0);
+    Rng vrng = rng.split(1);
+    initialize_velocities(p_, cfg.init, vrng, cfg.init_params);
+    double vol = 0.0;
+    const std::size_t n1 = static_cast<std::size_t>(
+        std::llround(cfg.init_params.fraction * static_cast<double>(n)));
+    for (std::size_t i = 0; i < n; ++i) {
+      if constexpr (F.radii) p_.set_radius(i, i < n - n1 ? 0.5 : 0.5 * cfg.size_ratio);
+      vol += ball_volume(D, base_contact(i, i));
+    }
+    (void)n1;
+    L_ = std::pow(vol / cfg.packing, 1.0 / D);
+    max_base_ = 0.0;
+    for (std::size_t i = 0; i < n; ++i) max_base_ = std::max(max_base_, base_contact(i, i));
+    Rng lrng = rng.split(2);
+    const LatticeSites<D> sites = lattice_sites<D>(n, L_, lrng);
+    for (std::size_t i = 0; i < n; ++i) p_.position(i) = sites.x[i];
+    tl_.assign(n, 0.0);
+    image_.assign(n * D, 0);
+    cnt_.assign(n, 0);
+    ev_.assign(n, Ev{});
+    scale_ref_ = std::min(1.0, sites.nearest * (1.0 - 1e-9) / max_base_);
+    rebuild();
+    if (scale_ref_ < 1.0) compress(*this, 1.0, cfg);
+    reset_observables();
+  }
+
+  // ---- running ------------------------------------------------------------------------
+  /// Processes all events up to time t (sigma sqrt(m/kT)). If obs is non-null it is called
+  /// at times now, now + every, ... <= t with velocities and unwrapped positions.
+  void run_until(double t, Observer* obs = nullptr, double every = 0.0) {
+    if (obs && !(every > 0.0)) throw InvalidInput("sampling interval must be > 0");
+    double next_sample = obs ? now_ : never;
+    std::uint64_t k = 0;
+    const double t0 = now_;
+    for (;;) {
+      const double te = q_.top_time();
+      while (obs && next_sample <= t && next_sample <= te) {
+        sample(next_sample, *obs);
+        next_sample = t0 + static_cast<double>(++k) * every;
+      }
+      if (te > t) break;
+      step();
+    }
+    now_ = t;
+  }
+  /// Processes exactly one event (a collision, a cell crossing or a re-prediction).
+  void step() {
+    const std::uint32_t i = q_.top();
+    now_ = q_.top_time();
+    Ev& e = ev_[i];
+    if (e.t_pair <= e.t_cross) {
+      const std::int32_t j = e.partner;
+      if (j < 0 || cnt_[j] != e.pcount) {
+        advance(i);
+        predict(i);
+        return;
+      }
+      collide(i, static_cast<std::uint32_t>(j));
+      predict(i);
+      predict(static_cast<std::uint32_t>(j));
+      if (debug_) check_overlaps();
+    } else {
+      cross(i);
+      if (debug_) check_overlaps();
+    }
+  }
+
+  // ---- observables --------------------------------------------------------------------
+  double time() const { return now_; }
+  std::uint64_t collisions() const { return ncoll_; }
+  std::size_t size() const { return p_.size(); }
+  double box_side() const { return L_; }
+  /// Packing fraction at the current diameters.
+  double packing() const {
+    double v = 0.0;
+    for (std::size_t i = 0; i < p_.size(); ++i) v += ball_volume(D, contact(i, i));
+    return v / std::pow(L_, D);
+  }
+  /// Kinetic temperature kT = sum m v^2 / (D N) (energy units).
+  double temperature() const { return 2.0 * kinetic_energy() / (D * static_cast<double>(size())); }
+  double kinetic_energy() const {
+    double e = 0.0;
+    for (std::size_t i = 0; i < size(); ++i) e += p_.mass(i) * p_.velocity(i).squaredNorm();
+    return 0.5 * e;
+  }
+  Vec<D> momentum() const {
+    Vec<D> m = Vec<D>::Zero();
+    for (std::size_t i = 0; i < size(); ++i) m += p_.mass(i) * p_.velocity(i);
+    return m;
+  }
+  /// Starts a new measurement window for Z, collision rate and mean free time.
+  void reset_observables() {
+    t_meas_ = now_;
+    coll_meas_ = ncoll_;
+    virial_ = 0.0;
+  }
+  /// Collisions in the current window, and its sum of r_ij . dp_i (energy units * time...).
+  std::uint64_t window_collisions() const { return ncoll_ - coll_meas_; }
+  double window_time() const { return now_ - t_meas_; }
+  double virial_sum() const { return virial_; }
+  /// Reduced pressure Z = PV/(N kT) = 1 + sum_coll r_ij . dp_i / (D N kT t) over the window.
+  double pressure_Z() const {
+    return 1.0 + virial_ / (D * static_cast<double>(size()) * temperature() * window_time());
+  }
+  /// Collisions per particle per unit time in the window (2 per collision).
+  double collision_rate() const {
+    return 2.0 * static_cast<double>(window_collisions()) /
+           (static_cast<double>(size()) * window_time());
+  }
+  /// Mean free time per particle, 1 / collision_rate (sigma sqrt(m/kT)).
+  double mean_free_time() const { return 1.0 / collision_rate(); }
+  const Store& particles() const { return p_; }
+  /// Unwrapped position of particle i at the current time (length).
+  Vec<D> unwrapped_position(std::size_t i) const {
+    Vec<D> x = p_.position(i) + p_.velocity(i) * (now_ - tl_[i]);
+    for (int k = 0; k < D; ++k) x[k] += L_ * image_[i * D + k];
+    return x;
+  }
+  /// Persistent bytes per particle of the whole engine state.
+  double bytes_per_particle() const {
+    const double n = static_cast<double>(size());
+    return p_.bytes_per_particle() + sizeof(double) + D * sizeof(std::int32_t) + sizeof(Ev) +
+           sizeof(std::uint32_t) + EventQueue::bytes_per_particle() +
+           cells_.bytes_per_particle(size()) + 0.0 * n;
+  }
+  int cells_per_side() const { return cells_.per_side(); }
+  /// Current diameter scale (1 after compression) and its growth rate (per unit time).
+  double diameter_scale() const { return scale_ref_ + rate_ * (now_ - t_scale_); }
+
+  /// Brings every particle to the current time, rebuilds cells for the current diameters
+  /// (growth rate `rate` from now on), rescales velocities to kinetic temperature kT if
+  /// kT > 0, sets the diameter scale to `exact_scale` if > 0 (only to remove round-off), and
+  /// re-predicts every event. Used by the LS compression (compression.hpp).
+  void restart(double rate, double kT = 0.0, double exact_scale = 0.0) {
+    scale_ref_ = exact_scale > 0.0 ? exact_scale : diameter_scale();
+    t_scale_ = now_;
+    rate_ = rate;
+    for (std::uint32_t i = 0; i < size(); ++i) advance(i);  // before velocities change
+    if (kT > 0.0) {
+      const double f = std::sqrt(kT / temperature());
+      for (std::size_t i = 0; i < size(); ++i) p_.velocity(i) *= f;
+    }
+    rebuild();
+  }
+  /// Largest diameter scale the current cells allow (cell width / largest base diameter).
+  double max_scale_for_cells() const { return cells_.width() / max_base_; }
+  /// Checks all pairs (O(N^2)); throws std::logic_error naming an overlapping pair.
+  void check_overlaps() const {
+    const double tol = 1e-9;
+    for (std::size_t i = 0; i < size(); ++i) {
+      const Vec<D> xi = pos_now(i);
+      for (std::size_t j = i + 1; j < size(); ++j) {
+        Vec<D> r = xi - pos_now(j);
+        for (int k = 0; k < D; ++k) r[k] -= L_ * std::round(r[k] / L_);
+        const double s = contact(i, j);
+        if (r.squaredNorm() < s * s * (1.0 - tol))
+          throw std::logic_error("EDMD overlap at t = " + std::to_string(now_) + ": particles " +
+                                 std::to_string(i) + ", " + std::to_string(j) + " at distance " +
+                                 std::to_string(r.norm()) + " < " + std::to_string(s));
+      }
+    }
+  }
+
+ private:
+  struct Ev {
+    double t_pair = never;
+    double t_cross = never;
+    std::int32_t partner = -1;
+    std::uint32_t pcount = 0;
+    std::int32_t cross = 0;  // axis * 2 + (1 if upward)
+  };
+
+  /// Contact distance of i and j at unit scale (sum of radii; 1 without radii).
+  double base_contact(std::size_t i, std::size_t j) const {
+    if constexpr (F.radii) return p_.radius(i) + p_.radius(j);
+    else {
+      (void)i, (void)j;
+      return 1.0;
+    }
+  }
+  double contact(std::size_t i, std::size_t j) const {
+    return base_contact(i, j) * diameter_scale();
+  }
+  Vec<D> pos_now(std::size_t i) const { return p_.position(i) + p_.velocity(i) * (now_ - tl_[i]); }
+  void advance(std::uint32_t i) {
+    p_.position(i) += p_.velocity(i) * (now_ - tl_[i]);
+    tl_[i] = now_;
+  }
+
+  void rebuild() {
+    const std::size_t n = size();
+    for (std::uint32_t i = 0; i < n; ++i) {
+      advance(i);
+      auto x = p_.position(i);
+      for (int k = 0; k < D; ++k) {
+        const double f = std::floor(x[k] / L_);
+        if (f != 0.0) {
+          x[k] -= f * L_;
+          image_[i * D + k] += static_cast<std::int32_t>(f);
+        }
+        if (x[k] >= L_) {  // -tiny wraps to L by round-off
+          x[k] -= L_;
+          ++image_[i * D + k];
+        }
+      }
+    }
+    cells_.build(L_, max_base_ * diameter_scale(), n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      std::array<int, D> c;
+      for (int k = 0; k < D; ++k) c[k] = cells_.coord(p_.position(i)[k]);
+      cells_.insert(i, cells_.index(c));
+    }
+    std::vector<double> keys(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      scan(i, -1, 0, never, -1);
+      keys[i] = std::min(ev_[i].t_pair, ev_[i].t_cross);
+    }
+    q_.build(keys);
+  }
+
+  /// Time of the next crossing of i out of its cell (i is at the current time).
+  void predict_crossing(std::uint32_t i) {
+    const auto c = cells_.coords(cells_.cell_of(i));
+    const double w = cells_.width();
+    const auto x = p_.position(i);
+    const auto v = p_.velocity(i);
+    double best = never;
+    std::int32_t code = 0;
+    for (int k = 0; k < D; ++k) {
+      double t = never;
+      if (v[k] > 0.0) {
+        const double hi = (c[k] + 1 == cells_.per_side()) ? L_ : (c[k] + 1) * w;
+        t = (hi - x[k]) / v[k];
+        if (t < best) best = t, code = 2 * k + 1;
+      } else if (v[k] < 0.0) {
+        t = (c[k] * w - x[k]) / v[k];
+        if (t < best) best = t, code = 2 * k;
+      }
+    }
+    ev_[i].t_cross = now_ + std::max(best, 0.0);
+    ev_[i].cross = code;
+  }
+
+  /// Pair time of i (at now) with j's cell image (position + shift), or never.
+  double pair_time(std::uint32_t i, std::uint32_t j, const Vec<D>& shift, double sc) const {
+    const Vec<D> r = p_.position(j) + p_.velocity(j) * (now_ - tl_[j]) + shift - p_.position(i);
+    const Vec<D> v = p_.velocity(j) - p_.velocity(i);
+    const double b = base_contact(i, j);
+    return contact_time(r.dot(v), v.squaredNorm(), r.squaredNorm(), b * sc, b * rate_);
+  }
+
+  /// Scans neighbour cells of i (all, or the slab `dir` along `axis`), keeping the earliest
+  /// pair event if it beats `best` (relative time) with `partner`; then predicts the crossing.
+  void scan(std::uint32_t i, int axis, int dir, double best, std::int32_t partner) {
+    const double sc = diameter_scale();
+    const auto h = cells_.coords(cells_.cell_of(i));
+    if (cells_.per_side() >= 3) {
+      cells_.for_each_neighbor(
+          h,
+          [&](std::uint32_t c, const Vec<D>& shift) {
+            for (std::int32_t j = cells_.head(c); j != Cells<D>::none; j = cells_.next(j)) {
+              if (static_cast<std::uint32_t>(j) == i) continue;
+              const double t = pair_time(i, static_cast<std::uint32_t>(j), shift, sc);
+              if (t < best) best = t, partner = j;
+            }
+          },
+          axis, dir);
+    } else {  // two cells per side: every cell, both images across differing cells
+      cells_.for_each_neighbor(h, [&](std::uint32_t c, const Vec<D>&) {
+        const auto cc = cells_.coords(c);
+        for (std::int32_t j = cells_.head(c); j != Cells<D>::none; j = cells_.next(j)) {
+          if (static_cast<std::uint32_t>(j) == i) continue;
+          const Vec<D> d = p_.position(j) - p_.position(i);
+          for (int mask = 0; mask < (1 << D); ++mask) {
+            Vec<D> shift = Vec<D>::Zero();
+            bool skip = false;
+            for (int k = 0; k < D; ++k) {
+              if (!(mask >> k & 1)) continue;
+              if (cc[k] == h[k]) skip = true;
+              shift[k] = d[k] > 0.0 ? -L_ : L_;
+            }
+            if (skip) continue;
+            const double t = pair_time(i, static_cast<std::uint32_t>(j), shift, sc);
+            if (t < best) best = t, partner = j;
+          }
+        }
+      });
+    }
+    Ev& e = ev_[i];
+    e.t_pair = now_ + best;
+    e.partner = partner;
+    e.pcount = partner >= 0 ? cnt_[partner] : 0;
+    predict_crossing(i);
+  }
+
+  /// Full prediction for i (advanced to now) and heap update.
+  void predict(std::uint32_t i) {
+    scan(i, -1, 0, never, -1);
+    q_.update(i, std::min(ev_[i].t_pair, ev_[i].t_cross));
+  }
+
+  void collide(std::uint32_t i, std::uint32_t j) {
+    advance(i);
+    advance(j);
+    Vec<D> r = p_.position(i) - p_.position(j);
+    for (int k = 0; k < D; ++k) r[k] -= L_ * std::round(r[k] / L_);  // contact: |r_k| <= L/2
+    const double rn = r.norm();
+    const Vec<D> n = r / rn;
+    const double wi = p_.inv_mass(i), wj = p_.inv_mass(j);
+    const Vec<D> vi0 = p_.velocity(i);
+    detail::collide_unchecked<D>(p_.velocity(i), p_.velocity(j), wi, wj, n);
+    if (rate_ != 0.0) {  // LS: separate at least as fast as the contact distance grows
+      const double a = 2.0 * base_contact(i, j) * rate_;
+      p_.velocity(i) += (a * wi / (wi + wj)) * n;
+      p_.velocity(j) -= (a * wj / (wi + wj)) * n;
+    }
+    virial_ += (p_.velocity(i) - vi0).dot(r) / wi;
+    ++cnt_[i];
+    ++cnt_[j];
+    ++ncoll_;
+  }
+
+  void cross(std::uint32_t i) {
+    advance(i);
+    const int k = ev_[i].cross / 2;
+    const int dir = (ev_[i].cross & 1) ? 1 : -1;
+    auto c = cells_.coords(cells_.cell_of(i));
+    const int m = cells_.per_side();
+    const double w = cells_.width();
+    auto x = p_.position(i);
+    c[k] += dir;
+    if (c[k] == m) {
+      c[k] = 0, x[k] = 0.0, ++image_[i * D + k];
+    } else if (c[k] < 0) {
+      c[k] = m - 1, x[k] = L_, --image_[i * D + k];
+    } else {
+      x[k] = (dir > 0 ? c[k] : c[k] + 1) * w;
+    }
+    cells_.remove(i);
+    cells_.insert(i, cells_.index(c));
+    Ev& e = ev_[i];
+    const bool keep = m >= 3 && e.partner >= 0 && cnt_[e.partner] == e.pcount;
+    if (keep) scan(i, k, dir, e.t_pair - now_, e.partner);
+    else scan(i, -1, 0, never, -1);
+    q_.update(i, std::min(e.t_pair, e.t_cross));
+  }
+
+  void sample(double ts, Observer& obs) const {
+    const std::size_t n = size();
+    constexpr int st = Store::stride;
+    std::vector<double> xu(n * st, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int k = 0; k < D; ++k)
+        xu[i * st + k] = p_.position(i)[k] + p_.velocity(i)[k] * (ts - tl_[i]) +
+                         L_ * image_[i * D + k];
+    }
+    Snapshot s = make_snapshot(p_);
+    s.time = ts;
+    s.collisions = ncoll_;
+    s.collisions_per_particle = 2.0 * static_cast<double>(ncoll_) / static_cast<double>(n);
+    s.positions = xu.data();
+    obs.observe(s);
+  }
+
+  Store p_;
+  std::vector<double> tl_;            // local clocks
+  std::vector<std::int32_t> image_;   // periodic image counts (unwrapped = x + L image)
+  std::vector<std::uint32_t> cnt_;    // per-particle collision counters
+  std::vector<Ev> ev_;
+  EventQueue q_;
+  Cells<D> cells_;
+  double L_ = 0.0, max_base_ = 1.0;
+  double now_ = 0.0;
+  double scale_ref_ = 1.0, t_scale_ = 0.0, rate_ = 0.0;
+  std::uint64_t ncoll_ = 0, coll_meas_ = 0;
+  double t_meas_ = 0.0, virial_ = 0.0;
+  bool debug_ = false;
+};
+
+}  // namespace hypergas::edmd
+
+#include "hypergas/edmd/compression.hpp"

@@ -1,0 +1,139 @@
+// Unit tests of the EDMD building blocks: the stable contact-time root, the event queue, the
+// cell stencil, the lattice, and short runs with the all-pairs overlap check in every D.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "hypergas/edmd/engine.hpp"
+
+using namespace hypergas;
+using namespace hypergas::edmd;
+
+TEST_CASE("contact time: head-on, miss, receding, touching", "[edmd]") {
+  // r = (3, 0), v = (-1, 0), sigma = 1: contact after 2.
+  REQUIRE(contact_time(-3.0, 1.0, 9.0, 1.0) == Approx(2.0).epsilon(1e-15));
+  // receding
+  REQUIRE(contact_time(3.0, 1.0, 9.0, 1.0) == never);
+  // impact parameter 1.5 > sigma: miss. r = (3, 1.5), v = (-1, 0).
+  REQUIRE(contact_time(-3.0, 1.0, 9.0 + 2.25, 1.0) == never);
+  // overlapping by round-off while approaching: collide now, never tunnel
+  REQUIRE(contact_time(-1.0, 1.0, 1.0 - 1e-15, 1.0) == 0.0);
+  REQUIRE(contact_time(1.0, 1.0, 1.0 - 1e-15, 1.0) == never);
+}
+
+TEST_CASE("contact time is accurate for nearly touching and nearly grazing pairs", "[edmd]") {
+  // Nearly touching: r = (1 + d, 0), v = (-1, 0); exact time d. The textbook root
+  // (-b - sqrt(disc)) / v^2 loses all digits of d when d ~ 1e-12; the stable form keeps them.
+  for (double d : {1e-6, 1e-10, 1e-13}) {
+    const double rx = 1.0 + d;
+    const double exact = rx - 1.0;  // d as represented after rounding 1 + d
+    REQUIRE(contact_time(-rx, 1.0, rx * rx, 1.0) == Approx(exact).epsilon(1e-9));
+  }
+  // Nearly grazing: r = (10, y), v = (-1, 0), y = 1 - e; exact time 10 - sqrt(1 - y^2).
+  // Grazing is ill-conditioned in the data (r.r = 100 + y^2 carries an absolute error
+  // ~ eps 100, so disc = 1 - y^2 does too): the bound is that conditioning, |dt| <=
+  // 4 eps b^2 / (2 sqrt(disc)) with b^2 = 100, and the pair must never be reported as missing.
+  for (double e : {1e-4, 1e-8, 1e-12}) {
+    const double y = 1.0 - e;
+    const double disc = (1.0 - y) * (1.0 + y);
+    const double exact = 10.0 - std::sqrt(disc);
+    const double t = contact_time(-10.0, 1.0, 100.0 + y * y, 1.0);
+    const double eps = std::numeric_limits<double>::epsilon();
+    REQUIRE(std::abs(t - exact) <= 4.0 * eps * 100.0 / (2.0 * std::sqrt(disc)) + 4 * eps * 10);
+  }
+  // Growing spheres (LS): r = 3, v = 0, s = 1 growing at a = 1: contact when 3 = 1 + t.
+  REQUIRE(contact_time(0.0, 0.0, 9.0, 1.0, 1.0) == Approx(2.0).epsilon(1e-14));
+}
+
+TEST_CASE("event queue returns times in order under updates", "[edmd]") {
+  std::mt19937_64 g(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> t(1000);
+  for (auto& x : t) x = u(g);
+  EventQueue q;
+  q.build(t);
+  for (int k = 0; k < 5000; ++k) {
+    const std::uint32_t id = static_cast<std::uint32_t>(g() % t.size());
+    t[id] = u(g);
+    q.update(id, t[id]);
+    const double mn = *std::min_element(t.begin(), t.end());
+    REQUIRE(q.top_time() == mn);
+    REQUIRE(t[q.top()] == mn);
+  }
+}
+
+TEST_CASE("lattice sites are at least `nearest` apart (periodic)", "[edmd]") {
+  Rng rng(3);
+  auto check = [&](auto tag) {
+    constexpr int D = decltype(tag)::value;
+    const double L = 5.3;
+    auto s = lattice_sites<D>(100, L, rng);
+    double dmin = 1e300;
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+      for (std::size_t j = i + 1; j < s.x.size(); ++j) {
+        Vec<D> r = s.x[i] - s.x[j];
+        for (int k = 0; k < D; ++k) r[k] -= L * std::round(r[k] / L);
+        dmin = std::min(dmin, r.norm());
+      }
+    REQUIRE(dmin >= s.nearest * (1 - 1e-12));
+  };
+  for_each_dim(check);
+}
+
+namespace {
+/// N that gives a box of side about `side` at packing eta in D dims.
+std::size_t n_for_side(int D, double eta, double side) {
+  return static_cast<std::size_t>(std::ceil(eta * std::pow(side, D) / ball_volume(D, 1.0)));
+}
+}  // namespace
+
+TEMPLATE_TEST_CASE_SIG("debug run: no pair ever overlaps, tiny (2 cells) and small boxes",
+                       "[edmd]", ((int D), D), 1, 2, 3, 4, 5, 6) {
+  // Boxes of side ~2.4 sigma (2 cells per side: all cells neighbours, two images) and
+  // ~3.2 sigma (3 cells: 3^D stencil with periodic shifts); the all-pairs check (O(N^2))
+  // runs after every event, including the Lubachevsky–Stillinger compression from the
+  // lattice, and throws on any overlap beyond 1e-9 relative.
+  // At most ~400 particles (the check is O(N^2) per event): lower packing in big D.
+  for (double side : {2.4, 3.2}) {
+    const double eta0 = D == 1 ? 0.5 : 0.55 * jamming_packing(D);
+    const double eta = std::min(eta0, 400.0 * ball_volume(D, 1.0) / std::pow(side, D));
+    Config cfg;
+    cfg.n = std::max<std::size_t>(4, n_for_side(D, eta, side));
+    cfg.packing = eta;
+    cfg.seed = 11;
+    cfg.debug_overlap = true;
+    Engine<D> e(cfg);
+    INFO("D = " << D << ", n = " << cfg.n << ", cells per side " << e.cells_per_side());
+    REQUIRE(e.cells_per_side() == (side < 3 ? 2 : 3));
+    const double E0 = e.kinetic_energy();
+    const std::uint64_t target = e.collisions() + 2000;
+    REQUIRE_NOTHROW([&] {
+      while (e.collisions() < target) e.step();
+    }());
+    REQUIRE(std::abs(e.kinetic_energy() - E0) <= 1e-12 * E0);
+  }
+}
+
+TEMPLATE_TEST_CASE_SIG("energy to round-off and momentum conserved over 1e5 collisions",
+                       "[edmd]", ((int D), D), 1, 2, 3, 4, 5, 6) {
+  // Round-off per collision is a few eps in each velocity; its random walk over K
+  // collisions stays below 64 eps sqrt(K) (relative), which is the bound asserted.
+  Config cfg;
+  cfg.n = 2000;
+  cfg.packing = D == 1 ? 0.5 : 0.5 * jamming_packing(D);
+  cfg.seed = 3;
+  Engine<D> e(cfg);
+  const double E0 = e.kinetic_energy();
+  const Vec<D> P0 = e.momentum();
+  const std::uint64_t K = 100000;
+  while (e.collisions() < K) e.step();
+  const double eps = std::numeric_limits<double>::epsilon();
+  const double bound = 64.0 * eps * std::sqrt(static_cast<double>(K));
+  REQUIRE(std::abs(e.kinetic_energy() - E0) <= bound * E0);
+  REQUIRE((e.momentum() - P0).norm() <= bound * std::sqrt(2.0 * E0 * cfg.n));
+  REQUIRE(e.bytes_per_particle() < 300.0);
+}

@@ -1,0 +1,85 @@
+// bench/report_plot.hpp -- the gnuplot script of the work-precision figure and its runner.
+// report_plot_script is a verbatim copy of scripts/plot_report.gp (a test compares them).
+#pragma once
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+namespace hypergas::bench {
+
+/// The text of scripts/plot_report.gp.
+inline constexpr const char* report_plot_script = R"GNUPLOT(# plot_report.gp -- the work-precision figure of `hypergas report` (error against run time).
+# Run inside a report folder (hypergas report writes a copy there and runs it):
+#   cd report && gnuplot plot_report.gp          -> work_precision.png
+# Reads work_precision.csv, finite_n.csv, ntc.csv and slopes.gp (fitted slopes).
+set datafile separator ','
+set datafile columnheaders
+set terminal pngcairo size 1800,1100 font ',11'
+set output 'work_precision.png'
+do for [d=1:6] {
+  eval sprintf('slope_stat_dsmc_%d = NaN', d)
+  eval sprintf('slope_maxwell_dsmc_%d = NaN', d)
+}
+ntc_order = -99
+load 'slopes.gp'
+set logscale xy
+set format x '10^{%L}'
+set format y '10^{%L}'
+set key bottom left font ',10'
+set grid
+set multiplot layout 2,2 title 'hypergas: error against run time (errors against exact values)'
+
+set title 'DSMC equilibrium <(m v^2/kT)^2>, hard spheres, N = 1000: statistical error'
+set xlabel 'run time per replica (s, one core)'
+set ylabel 'relative RMS error'
+plot for [d=1:6] 'work_precision.csv' \
+       using (strcol(1) eq 'stat' && $3 == d ? $5 : NaN):6 with linespoints pt 7 \
+       title sprintf('D = %d: slope %.2f', d, value(sprintf('slope_stat_dsmc_%d', d))), \
+     'work_precision.csv' using (strcol(1) eq 'finite_n' ? $5 : NaN):6 with linespoints \
+       dt 2 lw 2 pt 5 lc rgb 'black' title 'D = 3, N = 200 vs Maxwell-Boltzmann: finite-N plateau'
+
+set title 'DSMC Maxwell molecules: <v^4> relaxation rate vs exact (D-1)/(2D)'
+set ylabel 'relative RMS error of the rate'
+plot for [d=2:6] 'work_precision.csv' \
+       using (strcol(1) eq 'maxwell' && $3 == d ? $5 : NaN):6 with linespoints pt 7 \
+       title sprintf('D = %d: slope %.2f', d, value(sprintf('slope_maxwell_dsmc_%d', d)))
+
+set title 'finite-N bias of <(m v^2/kT)^2> vs Maxwell-Boltzmann (lines: exact microcanonical)'
+set xlabel 'N'
+set ylabel '|relative bias|'
+plot for [d=2:6] 'finite_n.csv' using ($1 == d ? $2 : NaN):(abs($3)):4 with yerrorbars \
+       pt 7 lc d title sprintf('D = %d', d), \
+     for [d=2:6] 'finite_n.csv' using ($1 == d ? $2 : NaN):(abs($5)) with lines lc d notitle
+
+set title (ntc_order > -90 ? sprintf('NTC time-step bias, 3D hard spheres: order %.2f', ntc_order) \
+                           : 'NTC time-step bias, 3D hard spheres: not detectable (|bias| < 3 se)')
+set xlabel 'NTC step dt (mean collision times)'
+set ylabel '|kurtosis(NTC) - kurtosis(exact)| / kurtosis, t = 2'
+plot 'ntc.csv' using 2:(abs($3)):4 with yerrorbars pt 7 title '|bias| +- 1 se', \
+     'ntc.csv' using 2:(3 * $4) with lines dt 2 title '3 se (resolution)'
+unset multiplot
+)GNUPLOT";
+
+/// Runs gnuplot on plot_report.gp inside `dir` (writes work_precision.png). Returns false,
+/// with a note on stderr, if gnuplot is not on PATH or fails.
+inline bool run_report_gnuplot(const std::filesystem::path& dir) {
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
+    std::fprintf(stderr, "report: gnuplot not found, no PNG written (CSV files are complete)\n");
+    return false;
+  }
+  std::string q = dir.string(), esc;
+  for (char c : q) {
+    if (c == '\'') esc += "'\\''";
+    else esc += c;
+  }
+  const std::string cmd = "cd '" + esc + "' && gnuplot plot_report.gp";
+  if (std::system(cmd.c_str()) != 0) {
+    std::fprintf(stderr, "report: gnuplot failed, no PNG written\n");
+    return false;
+  }
+  return true;
+}
+
+}  // namespace hypergas::bench

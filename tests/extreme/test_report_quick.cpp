@@ -1,0 +1,86 @@
+// The quick error-against-run-time report (bench/report_study.hpp, `hypergas report
+// --quick`): the CSV files have the documented shape, every error is finite and positive,
+// the statistical error falls as run time^(-1/2), and the finite-N bias matches the exact
+// microcanonical value. Also checks that the embedded gnuplot script is scripts/plot_report.gp.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../bench/report_study.hpp"
+
+namespace {
+std::vector<std::string> lines(const std::filesystem::path& f) {
+  std::ifstream in(f);
+  std::vector<std::string> out;
+  for (std::string l; std::getline(in, l);) out.push_back(l);
+  return out;
+}
+int fields(const std::string& l) { return 1 + static_cast<int>(std::count(l.begin(), l.end(), ',')); }
+}  // namespace
+
+TEST_CASE("hypergas report --quick: CSV shape and the statistical slope -1/2", "[report]") {
+  hypergas::bench::ReportOptions o;
+  o.quick = true;
+  o.verbose = false;
+  o.seed = 7;
+  const auto res = hypergas::bench::run_report_study(o);
+  const auto dir = std::filesystem::temp_directory_path() / "hypergas_report_quick_test";
+  std::filesystem::remove_all(dir);
+  hypergas::bench::write_report(res, dir, false);
+
+  const auto wp = lines(dir / "work_precision.csv");
+  REQUIRE(wp.at(0) == "study,engine,dim,param,run_s,error,error_se,replicas");
+  // 6 dims x 4 run lengths (stat) + 4 (finite_n) + 5 dims x 3 sizes (maxwell).
+  REQUIRE(wp.size() == 1 + 24 + 4 + 15);
+  for (std::size_t k = 1; k < wp.size(); ++k) REQUIRE(fields(wp[k]) == 8);
+  for (const auto& p : res.points) {
+    REQUIRE(std::isfinite(p.error));
+    REQUIRE(p.error > 0.0);
+    REQUIRE(p.run_s > 0.0);
+  }
+  const auto sl = lines(dir / "slopes.csv");
+  REQUIRE(sl.at(0) == "study,engine,dim,slope,slope_se,points");
+  REQUIRE(sl.size() == 1 + 6 + 5);
+  REQUIRE(lines(dir / "finite_n.csv").size() == 1 + 10);
+  REQUIRE(lines(dir / "ntc.csv").size() == 1 + 5);
+
+  // Statistical slope: the mean of the six per-D slopes (each with standard error ~0.03
+  // from the scatter of 4 points about its line; mean ~0.013) within 0.1 of -1/2: a
+  // deviation of > 7 standard errors, false-failure probability < 1e-10 if the slope is
+  // -1/2. Each single slope within 0.25 (> 5 standard errors).
+  double sum = 0.0;
+  int n = 0;
+  for (const auto& s : res.slopes)
+    if (s.study == "stat") {
+      INFO("D = " << s.dim << ": slope " << s.slope << " +- " << s.slope_se);
+      CHECK(std::abs(s.slope + 0.5) < 0.25);
+      sum += s.slope;
+      ++n;
+    }
+  REQUIRE(n == 6);
+  INFO("mean statistical slope " << sum / n);
+  REQUIRE(std::abs(sum / n + 0.5) < 0.1);
+
+  // Finite-N bias against the exact microcanonical prediction: within 5 standard errors
+  // + 2 % of the bias (the O(1) relative accuracy of its error estimate from 8 replicas).
+  for (const auto& b : res.finite_n) {
+    INFO("D = " << b.dim << ", N = " << b.param << ": bias " << b.bias << " +- " << b.bias_se
+                << ", exact " << b.theory);
+    REQUIRE(std::abs(b.bias - b.theory) < 5.0 * b.bias_se + 0.02 * std::abs(b.theory));
+  }
+}
+
+TEST_CASE("report: the embedded gnuplot script is scripts/plot_report.gp", "[report]") {
+  const auto src = std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() /
+                   "scripts" / "plot_report.gp";
+  std::ifstream in(src);
+  REQUIRE(in.good());
+  std::stringstream ss;
+  ss << in.rdbuf();
+  REQUIRE(ss.str() == std::string(hypergas::bench::report_plot_script));
+}

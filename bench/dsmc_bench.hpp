@@ -56,6 +56,7 @@ double pair_update_probe(std::size_t n, double updates, std::uint64_t seed) {
   double* v = p.velocity_data().data();
   constexpr int S = Particles<D>::stride;
   for (std::size_t i = 0; i < n * S; ++i) v[i] = 1e-3 * static_cast<double>(i % 1000);
+  dsmc::detail::advise_huge_pages(v, n * S * sizeof(double));  // as the engine does
   Rng rng(seed, 99);
   constexpr int ring = 32;
   std::uint32_t ri[ring], rj[ring];

@@ -40,7 +40,8 @@
 // Speed: candidate pairs are drawn 32 ahead and their velocities prefetched (random access
 // to N = 1e6 velocities is cache-miss bound); hard spheres accept by comparing squares, so
 // a rejected candidate costs no square root; equal-mass scenes compile the mass weights to
-// 1/2. Observers are called every `every` time units, never per collision.
+// 1/2; the velocity array is advised onto transparent huge pages (dsmc/huge_pages.hpp).
+// Observers are called every `every` time units, never per collision.
 #pragma once
 
 #include <algorithm>
@@ -54,6 +55,7 @@
 #include <utility>
 
 #include "hypergas/dsmc/config.hpp"
+#include "hypergas/dsmc/huge_pages.hpp"
 #include "hypergas/dsmc/majorant.hpp"
 #include "hypergas/dsmc/models.hpp"
 #include "hypergas/dsmc/time_unit.hpp"
@@ -87,6 +89,8 @@ requires Dimension<D> && CollisionModel<Model> &&(!F.positions) && (!F.masses) &
     if (p_.size() < 2 || p_.size() > 0xffffffffULL)
       throw InvalidInput("DSMC: the number of particles must be in [2, 2^32 - 1]");
     c_ = dsmc::rate_constant(p_, model_.exponent());
+    detail::advise_huge_pages(p_.velocity_data().data(),
+                              p_.velocity_data().size() * sizeof(double));
     retune(true);
     double* v = p_.velocity_data().data();
     for (int k = 0; k < ring; ++k) {

@@ -10,7 +10,9 @@
 // gas: velocities are rescaled to the initial temperature after every stage of
 // `Config::compression_stage` time units, and whenever the cell grid must be rebuilt for the
 // larger diameters. Near jamming the collision rate diverges; the compression then stops
-// with InvalidInput after `Config::max_compression_collisions` collisions.
+// with InvalidInput after `Config::max_compression_collisions` collisions. With
+// Config::debug_overlap the all-pairs check runs at every stage end during compression
+// (after every event once compressed).
 #pragma once
 
 #include <algorithm>
@@ -28,6 +30,8 @@ void compress(Engine<D, F>& e, double target_scale, const Config& cfg) {
   if (!(cfg.growth_rate > 0.0)) throw InvalidInput("compression growth rate must be > 0");
   const double kT = e.temperature();
   const std::uint64_t c0 = e.collisions();
+  // The O(N^2) debug check runs at every stage end here, not after every event.
+  const bool debug = e.set_debug(false);
   e.restart(cfg.growth_rate);
   while (e.diameter_scale() < target_scale) {
     const double sc = e.diameter_scale();
@@ -39,8 +43,10 @@ void compress(Engine<D, F>& e, double target_scale, const Config& cfg) {
                          " after " + std::to_string(e.collisions() - c0) + " collisions");
     const bool done = e.diameter_scale() >= target_scale * (1.0 - 1e-12);
     e.restart(done ? 0.0 : cfg.growth_rate, kT, done ? target_scale : 0.0);
+    if (debug) e.check_overlaps();
     if (done) break;
   }
+  e.set_debug(debug);
 }
 
 }  // namespace hypergas::edmd

@@ -222,6 +222,12 @@ class Engine {
     }
     rebuild();
   }
+  /// Turns the per-event all-pairs overlap check on or off; returns the previous setting.
+  bool set_debug(bool on) {
+    const bool old = debug_;
+    debug_ = on;
+    return old;
+  }
   /// Largest diameter scale the current cells allow (cell width / largest base diameter).
   double max_scale_for_cells() const { return cells_.width() / max_base_; }
   /// Checks all pairs (O(N^2)); throws std::logic_error naming an overlapping pair.

@@ -68,26 +68,27 @@ namespace hypergas::dsmc {
 
 /// The DSMC engine for dimension D, collision model `Model`, particle features F (Features{}
 /// or Features{.species = true}). Time in equilibrium mean collision times.
+// clang-format off
 template <int D, class Model, Features F = Features{}>
-requires Dimension<D> && CollisionModel<Model> &&(!F.positions) && (!F.masses) &&
-    (!F.radii) class Engine {
+  requires Dimension<D> && CollisionModel<Model> && (!F.positions) && (!F.masses) &&
+           (!F.radii)
+class Engine {
+  // clang-format on
  public:
   using ParticlesT = Particles<D, F>;
   static constexpr int stride = ParticlesT::stride;
 
-  /// Samples cfg.n particles in the initial state cfg.init. Throws InvalidInput on a bad
-  /// configuration (e.g. a two-species state requested without species support is simply
-  /// one species; use Features{.species = true}).
+  /// Samples cfg.n particles in the initial state cfg.init (two species only with
+  /// F.species). Throws InvalidInput on a bad configuration.
   explicit Engine(const Config& cfg) : Engine(cfg, initial_particles(cfg)) {}
 
   /// Starts from the given particles (velocities in units where the species-0 mass is 1);
   /// cfg.n and cfg.init are ignored. Total momentum should be zero (see time_unit.hpp).
   Engine(const Config& cfg, ParticlesT particles)
       : cfg_(cfg), p_(std::move(particles)), model_(make_model(cfg)), rng_(Rng(cfg.seed).split(2)) {
-    validate(cfg_);
+    cfg_.n = p_.size();
+    validate(cfg_);  // also checks 2 <= n < 2^32
     n_ = static_cast<std::uint32_t>(p_.size());
-    if (p_.size() < 2 || p_.size() > 0xffffffffULL)
-      throw InvalidInput("DSMC: the number of particles must be in [2, 2^32 - 1]");
     c_ = dsmc::rate_constant(p_, model_.exponent());
     detail::advise_huge_pages(p_.velocity_data().data(),
                               p_.velocity_data().size() * sizeof(double));

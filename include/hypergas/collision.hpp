@@ -58,6 +58,27 @@ inline void collide_unchecked(V1&& v1, V2&& v2, double w1, double w2, const Vec<
   }
 }
 
+/// The same kernel written for a given change of relative velocity, as the velocity-space
+/// engine uses it: its collision models produce the new relative velocity g' of
+/// g = v1 - v2 directly (for hard spheres g' = g - 2 (g.n) n, the seed's reflection; for
+/// isotropic models any g' with |g'| = |g|, which is the reflection at the normal
+/// n = (g - g')/|g - g'|). With dg = g' - g the seed's update is
+///     v1' = v1 + a1 dg,   v2' = v2 - a2 dg,   a_k = w_k / (w1 + w2),
+/// which conserves momentum exactly in exact arithmetic and energy because |g'| = |g|.
+/// `EqualMass` compiles the weights to 1/2 for single-mass scenes.
+template <int D, bool EqualMass = false, class V1, class V2>
+inline void exchange_relative(V1&& v1, V2&& v2, double w1, double w2, const Vec<D>& dg) {
+  if constexpr (EqualMass) {
+    (void)w1, (void)w2;
+    v1 += 0.5 * dg;
+    v2 -= 0.5 * dg;
+  } else {
+    const double wsum = w1 + w2;
+    v1 += (w1 / wsum) * dg;
+    v2 -= (w2 / wsum) * dg;
+  }
+}
+
 }  // namespace detail
 
 /// Throws InvalidInput unless n is finite and |n|^2 is within `normal_tolerance` of 1.

@@ -89,7 +89,7 @@ int main(int argc, char** argv) {
   // What you should see: Z rises from 1.2 to about 7 over this range. The virial and the
   // collision-rate columns agree (they are two measurements of one quantity); the series
   // through B4 is excellent at low density and falls below the data as x grows (the missing
-  // B5, B6, ... are positive): by 1 % at eta = 0.1 and 13 % at eta = 0.25. The contact value g(sigma)
+  // B5, B6, ... are positive): by 1 % at eta = 0.1 and 13-15 % at eta = 0.25. The contact value g(sigma)
   // grows from 1 (ideal gas) with density: particles crowd at contact.
   fmt::print("{}\n", ok ? "as expected: virial = rate route, and the virial series at low density"
                         : "UNEXPECTED: see eos_4d.csv");

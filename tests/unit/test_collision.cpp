@@ -178,3 +178,28 @@ TEMPLATE_TEST_CASE_SIG("bad normals and masses are rejected with InvalidInput", 
   REQUIRE(v1 == b1);
   REQUIRE(v2 == b2);
 }
+
+TEMPLATE_TEST_CASE_SIG("relative-velocity form equals the normal form for a reflection",
+                       "[collision]", ((int D), D), 2, 3, 4, 5, 6) {
+  // exchange_relative with dg = g' - g, g' = g - 2 (g.n) n (g = v1 - v2) must reproduce the
+  // seed's normal form to a few ulps: both are the same update, grouped differently.
+  Rng rng(21, D);
+  for (int trial = 0; trial < 5000; ++trial) {
+    const double w1 = 1.0 / random_mass(rng), w2 = 1.0 / random_mass(rng);
+    const Vec<D> n = unit_vector<D>(rng);
+    const Vec<D> v1 = normal_vector<D>(rng), v2 = normal_vector<D>(rng);
+    const auto [p1, p2] = collided<D>(v1, v2, w1, w2, n);
+    const Vec<D> g = v1 - v2;
+    const Vec<D> dg = -2.0 * g.dot(n) * n;
+    Vec<D> q1 = v1, q2 = v2;
+    detail::exchange_relative<D>(q1, q2, w1, w2, dg);
+    const double scale = v1.norm() + v2.norm();
+    REQUIRE((p1 - q1).norm() <= 16 * eps * scale);
+    REQUIRE((p2 - q2).norm() <= 16 * eps * scale);
+    Vec<D> e1 = v1, e2 = v2;
+    detail::exchange_relative<D, true>(e1, e2, 1.0, 1.0, dg);
+    const auto [r1, r2] = collided<D>(v1, v2, 1.0, 1.0, n);
+    REQUIRE((e1 - r1).norm() <= 16 * eps * scale);
+    REQUIRE((e2 - r2).norm() <= 16 * eps * scale);
+  }
+}

@@ -59,6 +59,7 @@
 #include "hypergas/dsmc/majorant.hpp"
 #include "hypergas/dsmc/models.hpp"
 #include "hypergas/dsmc/time_unit.hpp"
+#include "hypergas/dsmc/update.hpp"
 #include "hypergas/initial_state.hpp"
 #include "hypergas/observer.hpp"
 #include "hypergas/particles.hpp"
@@ -151,7 +152,6 @@ class Engine {
 
  private:
   static constexpr int ring = 32;  // candidate pairs drawn ahead (prefetch distance)
-  static constexpr bool equal_masses = !F.species;
 
   static ParticlesT initial_particles(const Config& cfg) {
     validate(cfg);
@@ -239,18 +239,7 @@ class Engine {
       }
       const double gn = std::sqrt(g2);
       const Vec<D> delta = Model::template deflect<D>(g, gn, rng_) - g;
-      if constexpr (equal_masses && D == 1) {
-        // Equal masses in 1D: g' = +-g, i.e. keep or swap, done exactly (no round-off).
-        if (delta[0] != 0.0) std::swap(vi[0], vj[0]);
-      } else if constexpr (equal_masses) {
-        vi += 0.5 * delta;
-        vj -= 0.5 * delta;
-      } else {
-        const double w1 = p_.inv_mass(i), w2 = p_.inv_mass(j);
-        const double ws = w1 + w2;
-        vi += (w1 / ws) * delta;
-        vj -= (w2 / ws) * delta;
-      }
+      apply_deflection<D>(p_, i, j, vi, vj, delta);
       ++collisions_;
       if constexpr (Model::needs_majorant) {
         const double s2 = std::max(vi.squaredNorm(), vj.squaredNorm());

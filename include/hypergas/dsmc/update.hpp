@@ -1,0 +1,30 @@
+// hypergas/dsmc/update.hpp -- the one place where a DSMC collision changes velocities.
+//
+// The collision models (models.hpp) return the new relative velocity g' of g = v_i - v_j;
+// the velocities are then updated by the shared seed kernel in its relative-velocity form,
+// hypergas::detail::exchange_relative (collision.hpp), with the masses of the scene.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+
+#include "hypergas/collision.hpp"
+#include "hypergas/particles.hpp"
+
+namespace hypergas::dsmc {
+
+/// Applies the change dg = g' - g of the relative velocity of particles i and j (views vi,
+/// vj into p's velocity array). Single-mass scenes compile the weights to 1/2; in D = 1
+/// with equal masses g' = +-g and the update is done as an exact keep-or-swap.
+template <int D, Features F, class VI, class VJ>
+inline void apply_deflection(const Particles<D, F>& p, std::uint32_t i, std::uint32_t j, VI&& vi,
+                             VJ&& vj, const Vec<D>& dg) {
+  constexpr bool equal_masses = !F.species && !F.masses;
+  if constexpr (equal_masses && D == 1) {
+    if (dg[0] != 0.0) std::swap(vi[0], vj[0]);
+  } else {
+    hypergas::detail::exchange_relative<D, equal_masses>(vi, vj, p.inv_mass(i), p.inv_mass(j), dg);
+  }
+}
+
+}  // namespace hypergas::dsmc

@@ -25,8 +25,8 @@ int run_command(const RunOptions& o);
 /// `hypergas bench`: throughput, one JSON object per line on stdout. Returns the exit code.
 int bench_command(const BenchOptions& o);
 
-/// Registers `hypergas report` on `app` (error against run time; a hook for its owner).
-/// The returned callback runs it and gives the exit code.
+/// Registers `hypergas report` and its options on `app` (error against run time, the study
+/// of bench/report_study.hpp); returns the subcommand.
 CLI::App* add_report_command(CLI::App& app);
 /// Runs `hypergas report` (after parsing). Returns the exit code.
 int report_command();

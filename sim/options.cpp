@@ -6,6 +6,7 @@
 #include <fmt/core.h>
 #include <fmt/ranges.h>
 
+#include "hypergas/edmd/box.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/initial_state.hpp"
 #include "hypergas/vec.hpp"
@@ -51,13 +52,8 @@ const std::vector<std::string>& init_names() {
 std::string default_init(EngineKind e) { return e == EngineKind::dsmc ? "delta" : "maxwell"; }
 
 double jamming_packing(int dim) {
-  // D = 1: rods fill the line only at eta = 1. D = 2: bidisperse disks jam at 0.84
-  // (O'Hern, Silbert, Liu & Nagel, PRE 68, 011306 (2003)). D = 3..6: maximally random
-  // jammed hyperspheres, 0.64, 0.46, 0.31, 0.20 (Skoge, Donev, Stillinger & Torquato,
-  // PRE 74, 041127 (2006), Table I).
-  static constexpr double eta[] = {1.0, 0.84, 0.64, 0.46, 0.31, 0.20};
   check_dim(dim, "dimension");
-  return eta[dim - 1];
+  return edmd::jamming_packing(dim);  // sources in include/hypergas/edmd/box.hpp
 }
 
 EngineKind RunOptions::engine_kind() const {
@@ -109,7 +105,10 @@ void add_run_options(CLI::App& app, RunOptions& o) {
                  "initial kT in units of m1 v0^2 (dsmc; edmd fixes kT = 1), finite and > 0")
       ->capture_default_str();
   app.add_option("--seed", o.seed, "random seed (any 64-bit integer)")->capture_default_str();
-  app.add_option("--threads,-j", o.threads, "worker threads, >= 1")->capture_default_str();
+  app.add_option("--threads,-j", o.threads,
+                 "dsmc: run K independent replicas on K threads (files from replica 0, which "
+                 "keeps --seed; summary adds totals and replica error bars); edmd: 1")
+      ->capture_default_str();
 }
 
 void add_bench_options(CLI::App& app, BenchOptions& o) {
@@ -125,6 +124,10 @@ void add_bench_options(CLI::App& app, BenchOptions& o) {
       ->capture_default_str();
   app.add_option("--min-collisions", o.min_collisions,
                  "accepted collisions per timed run, >= 1000")
+      ->capture_default_str();
+  app.add_option("--threads,-j", o.threads,
+                 "dsmc: > 1 adds a line with the aggregate rate of that many concurrent "
+                 "independent replicas, 1..64")
       ->capture_default_str();
   app.add_option("--seed", o.seed, "random seed")->capture_default_str();
 }
@@ -167,8 +170,10 @@ void validate(const RunOptions& o) {
     bad(fmt::format("--temperature must be a finite kT > 0, got {}", o.temperature));
   if (e == EngineKind::edmd && o.temperature != 1.0)
     bad("--temperature applies to --engine dsmc only (edmd units fix kT = 1)");
-  if (o.threads < 1 || o.threads > 1024)
-    bad(fmt::format("--threads must be in 1..1024, got {}", o.threads));
+  if (o.threads < 1 || o.threads > 64)
+    bad(fmt::format("--threads must be in 1..64, got {}", o.threads));
+  if (e == EngineKind::edmd && o.threads != 1)
+    bad("--threads applies to --engine dsmc only (the EDMD engine is sequential)");
 }
 
 void validate(const BenchOptions& o) {
@@ -187,6 +192,8 @@ void validate(const BenchOptions& o) {
       bad(fmt::format("--packing {} is at or above the jamming density {} in D = {}", o.packing,
                       jamming_packing(d), d));
   if (o.reps < 1 || o.reps > 100) bad(fmt::format("--reps must be in 1..100, got {}", o.reps));
+  if (o.threads < 1 || o.threads > 64)
+    bad(fmt::format("--threads must be in 1..64, got {}", o.threads));
   if (!(std::isfinite(o.min_collisions) && o.min_collisions >= 1000.0 &&
         o.min_collisions <= 1e12))
     bad(fmt::format("--min-collisions must be in [1000, 1e12], got {}", o.min_collisions));

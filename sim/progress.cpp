@@ -13,7 +13,12 @@ namespace hypergas::cli {
 
 namespace {
 volatile std::sig_atomic_t g_interrupted = 0;
-extern "C" void on_signal(int) { g_interrupted = 1; }
+// First signal: ask the run to stop at its next snapshot (cleaning up its output folder).
+// The handler then resets itself, so a second Ctrl-C terminates at once.
+extern "C" void on_signal(int sig) {
+  g_interrupted = 1;
+  std::signal(sig, SIG_DFL);
+}
 }  // namespace
 
 bool interrupted() { return g_interrupted != 0; }

@@ -31,7 +31,8 @@ class Progress {
 /// Set by SIGINT/SIGTERM once `install_interrupt_handler` ran; long loops poll it and
 /// throw Interrupted so that output folders are cleaned up.
 bool interrupted();
-/// Installs the SIGINT/SIGTERM handler that sets the `interrupted()` flag.
+/// Installs the SIGINT/SIGTERM handler that sets the `interrupted()` flag (once: a second
+/// signal terminates the process immediately).
 void install_interrupt_handler();
 
 /// Thrown by a run loop that saw `interrupted()`; main() exits with 130.

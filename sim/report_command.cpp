@@ -1,20 +1,52 @@
 // sim/report_command.cpp -- `hypergas report`: error against run time (CSV + PNG).
 //
-// A hook: the subcommand is registered so that `hypergas report --help` and the option
-// structure exist; the study itself is still to be written (see DESIGN.md section 5).
+// The study is bench/report_study.hpp (shared with bench_report); this file gives it the
+// command's options, exit codes and output-folder handling (all files or none).
+#include <cmath>
+
 #include <fmt/core.h>
 
 #include "commands.hpp"
+#include "output_dir.hpp"
+#include "report_study.hpp"
 
 namespace hypergas::cli {
 
+namespace {
+bench::ReportOptions report_options;
+}
+
 CLI::App* add_report_command(CLI::App& app) {
-  return app.add_subcommand("report", "error against run time: CSV + PNG (not implemented yet)");
+  CLI::App* r = app.add_subcommand(
+      "report", "error against run time (work-precision study): CSV + PNG in --out");
+  auto& o = report_options;
+  r->add_option("--out,-o", o.out, "output folder (created if missing)")->capture_default_str();
+  r->add_flag("--quick", o.quick, "about 20 s instead of about 5 min: fewer points and replicas");
+  r->add_option("--seed", o.seed, "random seed")->capture_default_str();
+  r->add_option("--threads,-j", o.threads, "replicas run on this many threads, 1..64")
+      ->capture_default_str();
+  r->add_flag("--no-plot{false}", o.plot, "skip the PNG (gnuplot)");
+  return r;
 }
 
 int report_command() {
-  fmt::print(stderr, "hypergas report: not implemented yet\n");
-  return 1;
+  bench::ReportOptions o = report_options;
+  if (o.threads < 1 || o.threads > 64)
+    throw InvalidInput(fmt::format("--threads must be in 1..64, got {}", o.threads));
+  OutputDir out(o.out);
+  const bench::ReportResult res = bench::run_report_study(o);
+  bench::write_report(res, out.staging(), o.plot);
+  out.commit();
+  fmt::print("{:<10} {:<6} {:>3} {:>8} {:>8}\n", "study", "engine", "D", "slope", "+-");
+  for (const auto& s : res.slopes)
+    fmt::print("{:<10} {:<6} {:>3} {:>8.3f} {:>8.3f}\n", s.study, s.engine, s.dim, s.slope,
+               s.slope_se);
+  if (std::isnan(res.ntc_order))
+    fmt::print("NTC step bias: not detectable at any dt (|bias| < 3 se), see ntc.csv\n");
+  else
+    fmt::print("NTC step bias order: {:.2f} +- {:.2f}\n", res.ntc_order, res.ntc_order_se);
+  fmt::print("report written to {}/ in {:.1f} s\n", out.dir().string(), res.total_s);
+  return 0;
 }
 
 }  // namespace hypergas::cli

@@ -1,4 +1,5 @@
 // sim/run_dsmc.cpp -- `hypergas run --engine dsmc`: the velocity-space engine with recorders.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -10,6 +11,7 @@
 #include "engine_runs.hpp"
 #include "hypergas/analysis/moments_recorder.hpp"
 #include "hypergas/dsmc/engine.hpp"
+#include "hypergas/dsmc/replicas.hpp"
 #include "run_observer.hpp"
 
 namespace hypergas::cli {
@@ -21,12 +23,7 @@ double sampling_interval(double span, double every) {
 }
 
 RunRecord simulate(const RunOptions& o, bool progress) {
-#ifdef HYPERGAS_CLI_EDMD
   if (o.engine_kind() == EngineKind::edmd) return simulate_edmd(o, progress);
-#else
-  if (o.engine_kind() == EngineKind::edmd)
-    throw InvalidInput("--engine edmd: the EDMD engine is not part of this build yet");
-#endif
   return simulate_dsmc(o, progress);
 }
 
@@ -55,26 +52,57 @@ double summary_number(const analysis::JsonObject& o, const std::string& key) {
 
 namespace {
 
+/// Mean and standard error of the mean of xs.
+std::pair<double, double> mean_se(const std::vector<double>& xs) {
+  double m = 0.0, v = 0.0;
+  for (double x : xs) m += x / static_cast<double>(xs.size());
+  for (double x : xs) v += (x - m) * (x - m);
+  const double k = static_cast<double>(xs.size());
+  return {m, xs.size() > 1 ? std::sqrt(v / (k - 1.0) / k) : 0.0};
+}
+
+/// Runs `threads` independent replicas (dsmc/replicas.hpp: replica 0 keeps the seed, so its
+/// files equal those of a one-thread run). The files come from replica 0; the summary adds
+/// totals, the aggregate rate and the replica mean of the final kurtosis with its error.
 template <int D, class Model, bool Species>
 RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress) {
   constexpr Features F{.species = Species};
+  using Engine = dsmc::Engine<D, Model, F>;
   using Clock = std::chrono::steady_clock;
   const double until = o.until > 0.0 ? o.until : 10.0;
   const double every = sampling_interval(until, o.every);
+  const int k = o.threads;
 
+  std::vector<RunRecord> recs(static_cast<std::size_t>(k));
+  std::vector<double> engine_s(k), rate(k), drift_e(k), drift_p(k), cpp(k);
+  std::vector<std::int64_t> coll(k);
   const auto t0 = Clock::now();
-  dsmc::Engine<D, Model, F> engine(cfg);
-  const Conserved c0 = conserved(engine.particles());
-  RunRecord rec;
-  RunObserver obs({&rec.moments}, "dsmc", until, progress);
-  const auto t1 = Clock::now();
-  engine.run_until(until, &obs, every);
-  const auto t2 = Clock::now();
-  const Conserved c1 = conserved(engine.particles());
+  dsmc::run_replicas<Engine>(cfg, k, k, [&](int r, Engine& engine) {
+    const Conserved c0 = conserved(engine.particles());
+    RunObserver obs({&recs[r].moments}, "dsmc", until, progress && r == 0);
+    const auto t1 = Clock::now();
+    engine.run_until(until, &obs, every);
+    engine_s[r] =
+        std::chrono::duration<double>(Clock::now() - t1).count() - obs.analysis_seconds();
+    const Conserved c1 = conserved(engine.particles());
+    coll[r] = static_cast<std::int64_t>(engine.collisions());
+    rate[r] = engine_s[r] > 0.0 ? static_cast<double>(coll[r]) / engine_s[r] : 0.0;
+    drift_e[r] = energy_rel_drift(c0, c1);
+    drift_p[r] = momentum_drift(c0, c1);
+    cpp[r] = engine.collisions_per_particle();
+  });
+  const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
 
-  const double wall = std::chrono::duration<double>(t2 - t0).count();
-  const double engine_s = std::chrono::duration<double>(t2 - t1).count() - obs.analysis_seconds();
-  const auto coll = static_cast<std::int64_t>(engine.collisions());
+  RunRecord rec = std::move(recs[0]);
+  std::int64_t total = 0;
+  double total_rate = 0.0;
+  std::vector<double> kurt;
+  for (int r = 0; r < k; ++r) {
+    total += coll[r];
+    total_rate += rate[r];
+    kurt.push_back((r == 0 ? rec : recs[r]).moments.column("kurtosis_x").back());
+  }
+  const auto [kurt_mean, kurt_se] = mean_se(kurt);
   const auto last = [&](const char* col) { return rec.moments.column(col).back(); };
   rec.summary = analysis::JsonObject{
       {"dim", std::int64_t{D}},
@@ -82,22 +110,25 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress) {
       {"model", o.model},
       {"n", static_cast<std::int64_t>(o.n)},
       {"seed", static_cast<std::int64_t>(o.seed)},
-      {"collisions", coll},
+      {"collisions", total},
       {"wall_s", wall},
-      {"collisions_per_s", engine_s > 0.0 ? static_cast<double>(coll) / engine_s : 0.0},
-      {"energy_rel_drift", energy_rel_drift(c0, c1)},
-      {"momentum_drift", momentum_drift(c0, c1)},
+      {"collisions_per_s", total_rate},
+      {"energy_rel_drift", *std::max_element(drift_e.begin(), drift_e.end())},
+      {"momentum_drift", *std::max_element(drift_p.begin(), drift_p.end())},
       {"init", o.init.empty() ? default_init(EngineKind::dsmc) : o.init},
-      {"time", engine.time()},
+      {"time", until},
       {"every", every},
       {"mass_ratio", o.mass_ratio},
       {"fraction", Species ? o.fraction : 0.0},
-      {"collisions_per_particle", engine.collisions_per_particle()},
+      {"replicas", std::int64_t{k}},
+      {"collisions_per_particle", cpp[0]},
       {"kurtosis_x", last("kurtosis_x")},
       {"m4_ratio", last("m4_ratio")},
       {"l1_speed", last("l1_speed")},
       {"ks_p_speed", last("ks_p_speed")},
       {"chi2_p_speed", last("chi2_p_speed")},
+      {"kurtosis_x_replica_mean", kurt_mean},
+      {"kurtosis_x_replica_se", kurt_se},
   };
   return rec;
 }

@@ -53,13 +53,13 @@ TEST_CASE("run: bad times are rejected", "[cli]") {
 }
 
 TEST_CASE("run: packing at or above the D-dimensional jamming density is rejected", "[cli]") {
-  // Jamming densities 1, 0.84, 0.64, 0.46, 0.31, 0.20 for D = 1..6 (see sim/options.cpp).
+  // Jamming densities 1, 0.82, 0.64, 0.46, 0.31, 0.20 for D = 1..6 (edmd/box.hpp).
   expect_rejected({"run", "--engine", "edmd", "--dim", "3", "--packing", "0.65"},
                   "jamming density 0.64");
   expect_rejected({"run", "--engine", "edmd", "--dim", "6", "--packing", "0.2"},
                   "jamming density 0.2");
-  expect_rejected({"run", "--engine", "edmd", "--dim", "2", "--packing", "0.9"},
-                  "jamming density 0.84");
+  expect_rejected({"run", "--engine", "edmd", "--dim", "2", "--packing", "0.83"},
+                  "jamming density 0.82");
   expect_rejected({"run", "--engine", "edmd", "--dim", "1", "--packing", "1"}, "jamming");
   expect_rejected({"run", "--engine", "edmd", "--packing", "-0.1"}, "--packing must be");
 }
@@ -70,7 +70,8 @@ TEST_CASE("run: unknown names are rejected", "[cli]") {
   expect_rejected({"run", "--init", "nonsense"}, "unknown initial state 'nonsense'");
   expect_rejected({"run", "--engine", "edmd", "--model", "maxwell"}, "needs --engine dsmc");
   expect_rejected({"run", "--no-such-option", "1"}, "--no-such-option");
-  expect_rejected({"run", "--threads", "0"}, "--threads must be in 1..1024");
+  expect_rejected({"run", "--threads", "0"}, "--threads must be in 1..64");
+  expect_rejected({"run", "--engine", "edmd", "--threads", "2"}, "--engine dsmc only");
 }
 
 TEST_CASE("run: an unwritable output folder is rejected and nothing is created", "[cli]") {

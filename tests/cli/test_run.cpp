@@ -106,3 +106,42 @@ TEST_CASE("the default scene prints one row per D and writes CSV under --out", "
   CHECK(starts_with(header(out / "summary.csv"), "dim,n,mass_ratio"));
 }
 #endif
+
+#ifdef HYPERGAS_CLI_PATH
+TEST_CASE("bench prints one JSON object per line on stdout", "[cli]") {
+  cli_test::Scratch s("bench");
+  const auto r = cli_test::run({"bench", "--engine", "all", "--dim", "2", "--n", "1000",
+                                "--reps", "1", "--min-collisions", "2000"},
+                               s.path());
+  INFO("stderr: " << r.err << "\nstdout: " << r.out);
+  REQUIRE(r.code == 0);
+  const auto lines = cli_test::lines(r.out);
+  REQUIRE(lines.size() >= 2);  // at least one DSMC and one EDMD line
+  bool dsmc = false, edmd = false;
+  for (const auto& l : lines) {
+    CHECK(l.front() == '{');
+    CHECK(l.back() == '}');
+    CHECK(l.find("\"collisions_per_s\"") != std::string::npos);
+    dsmc = dsmc || l.find("\"bench\":\"dsmc\"") != std::string::npos;
+    edmd = edmd || l.find("\"bench\":\"edmd\"") != std::string::npos;
+  }
+  CHECK(dsmc);
+  CHECK(edmd);
+}
+
+TEST_CASE("run --threads 2 runs two DSMC replicas; replica 0 equals the one-thread run", "[cli]") {
+  cli_test::Scratch s("replicas");
+  const std::vector<std::string> base{"run", "--dim", "3", "--n", "2000", "--until", "1",
+                                      "--seed", "11"};
+  auto one = base, two = base;
+  one.insert(one.end(), {"--out", (s.path() / "one").string()});
+  two.insert(two.end(), {"--out", (s.path() / "two").string(), "--threads", "2"});
+  REQUIRE(cli_test::run(one, s.path()).code == 0);
+  REQUIRE(cli_test::run(two, s.path()).code == 0);
+  // Same seed for replica 0: bit-identical moments.
+  CHECK(cli_test::slurp(s.path() / "one" / "moments.csv") ==
+        cli_test::slurp(s.path() / "two" / "moments.csv"));
+  CHECK(cli_test::slurp(s.path() / "two" / "summary.json").find("\"replicas\": 2") !=
+        std::string::npos);
+}
+#endif

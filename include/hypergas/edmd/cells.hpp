@@ -9,10 +9,14 @@
 //    edge adds a shift of +-L. The image is the "cell image", not the minimum image of the
 //    current positions (the two differ when L < 4w, where the minimum image would miss
 //    collisions).
-//  * m = 2 (2 sigma <= L < 3 sigma): the offsets -1 and +1 are the same cell, so the stencil
-//    is the 2^D distinct cells and, on an axis where the cells differ, both images
-//    (d and d -+ L) can touch within the cell window: the engine tries both.
-// m = 1 cannot occur: the engine requires L >= 2 s_max.
+//  * fewer than 3 cells fit (2 s_max <= L < 3 s_max): a 2-cell grid would make the offsets
+//    -1 and +1 the same cell, and both images of a neighbour can then touch. Such a box is
+//    handled as ONE cell whose stencil is the cell itself under all 3^D shifts in
+//    {-L, 0, L}^D: every pair is tested against every image that can be within a contact
+//    distance (|d_k| < L, so the touching image has shift -L, 0 or +L on each axis), and
+//    the box faces are the cell faces, so wrapping across the box is a crossing event.
+//    These boxes hold a handful of particles, so the O(N 3^D) scan is cheap.
+// L < 2 s_max is rejected: a sphere would touch its own image.
 #pragma once
 
 #include <array>
@@ -38,8 +42,9 @@ class Cells {
       throw InvalidInput("box side " + std::to_string(L) + " is below two contact distances (" +
                          std::to_string(min_width) + "): enlarge N or lower the packing");
     // Cap the number of cells (memory): at most ~2 cells per particle.
-    while (m_ > 2 && std::pow(static_cast<double>(m_), D) > 2.0 * static_cast<double>(n) + 64.0)
+    while (m_ > 3 && std::pow(static_cast<double>(m_), D) > 2.0 * static_cast<double>(n) + 64.0)
       --m_;
+    if (m_ < 3) m_ = 1;  // one cell seen under all 3^D shifts (see the file comment)
     L_ = L;
     w_ = L / m_;
     ncells_ = 1;
@@ -48,9 +53,10 @@ class Cells {
     next_.assign(n, none);
     prev_.assign(n, none);
     cell_.assign(n, 0);
-    // Stencil offsets: {-1,0,1}^D for m >= 3, {0,1}^D (distinct cells) for m = 2.
-    const int lo = (m_ >= 3) ? -1 : 0;
-    const int span = (m_ >= 3) ? 3 : 2;
+    // Stencil offsets {-1,0,1}^D: the 3^D neighbour cells for m >= 3, or the single cell
+    // under every shift in {-L,0,L}^D for m = 1.
+    const int lo = -1;
+    const int span = 3;
     offsets_.clear();
     int total = 1;
     for (int k = 0; k < D; ++k) total *= span;

@@ -340,38 +340,16 @@ class Engine {
   void scan(std::uint32_t i, int axis, int dir, double best, std::int32_t partner) {
     const double sc = diameter_scale();
     const auto h = cells_.coords(cells_.cell_of(i));
-    if (cells_.per_side() >= 3) {
-      cells_.for_each_neighbor(
-          h,
-          [&](std::uint32_t c, const Vec<D>& shift) {
-            for (std::int32_t j = cells_.head(c); j != Cells<D>::none; j = cells_.next(j)) {
-              if (static_cast<std::uint32_t>(j) == i) continue;
-              const double t = pair_time(i, static_cast<std::uint32_t>(j), shift, sc);
-              if (t < best) best = t, partner = j;
-            }
-          },
-          axis, dir);
-    } else {  // two cells per side: every cell, both images across differing cells
-      cells_.for_each_neighbor(h, [&](std::uint32_t c, const Vec<D>&) {
-        const auto cc = cells_.coords(c);
-        for (std::int32_t j = cells_.head(c); j != Cells<D>::none; j = cells_.next(j)) {
-          if (static_cast<std::uint32_t>(j) == i) continue;
-          const Vec<D> d = p_.position(j) - p_.position(i);
-          for (int mask = 0; mask < (1 << D); ++mask) {
-            Vec<D> shift = Vec<D>::Zero();
-            bool skip = false;
-            for (int k = 0; k < D; ++k) {
-              if (!(mask >> k & 1)) continue;
-              if (cc[k] == h[k]) skip = true;
-              shift[k] = d[k] > 0.0 ? -L_ : L_;
-            }
-            if (skip) continue;
+    cells_.for_each_neighbor(
+        h,
+        [&](std::uint32_t c, const Vec<D>& shift) {
+          for (std::int32_t j = cells_.head(c); j != Cells<D>::none; j = cells_.next(j)) {
+            if (static_cast<std::uint32_t>(j) == i) continue;
             const double t = pair_time(i, static_cast<std::uint32_t>(j), shift, sc);
             if (t < best) best = t, partner = j;
           }
-        }
-      });
-    }
+        },
+        axis, dir);
     Ev& e = ev_[i];
     e.t_pair = now_ + best;
     e.partner = partner;

@@ -22,8 +22,17 @@ std::vector<T> parse_list(const std::string& s) {
 int main(int argc, char** argv) {
   hypergas::bench::DsmcBenchOptions o;
   try {
-    for (int i = 1; i + 1 < argc; i += 2) {
-      const std::string k = argv[i], v = argv[i + 1];
+    for (int i = 1; i < argc; i += 2) {
+      const std::string k = argv[i];
+      if (k == "-h" || k == "--help") {
+        std::cout << "Usage: bench_dsmc [--dims 1,2,3] [--ns 10000,1000000] [--reps 3]\n"
+                     "                  [--min-collisions 5e6] [--model hs|maxwell|vhs]"
+                     " [--threads 2]\n"
+                     "DSMC throughput, one JSON object per line (same as hypergas bench).\n";
+        return 0;
+      }
+      if (i + 1 >= argc) throw hypergas::InvalidInput("option " + k + " needs a value");
+      const std::string v = argv[i + 1];
       if (k == "--dims")
         o.dims = parse_list<int>(v);
       else if (k == "--ns")

@@ -19,6 +19,7 @@
 #include <string>
 
 #include "hypergas/edmd/config.hpp"
+#include "hypergas/edmd/engine.hpp"  // (engine.hpp includes this file at its end)
 #include "hypergas/error.hpp"
 
 namespace hypergas::edmd {

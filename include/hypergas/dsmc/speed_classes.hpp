@@ -39,6 +39,7 @@
 #include "hypergas/dsmc/config.hpp"
 #include "hypergas/dsmc/models.hpp"
 #include "hypergas/dsmc/time_unit.hpp"
+#include "hypergas/dsmc/update.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/initial_state.hpp"
 #include "hypergas/particles.hpp"
@@ -119,16 +120,7 @@ class ClassEngine {
       }
       const double gn = std::sqrt(g2);
       const Vec<D> delta = Model::template deflect<D>(g, gn, rng_) - g;
-      if constexpr (!F.species && D == 1) {
-        if (delta[0] != 0.0) std::swap(vi[0], vj[0]);
-      } else if constexpr (!F.species) {
-        vi += 0.5 * delta;
-        vj -= 0.5 * delta;
-      } else {
-        const double w1 = p_.inv_mass(i), w2 = p_.inv_mass(j), ws = w1 + w2;
-        vi += (w1 / ws) * delta;
-        vj -= (w2 / ws) * delta;
-      }
+      apply_deflection<D>(p_, i, j, vi, vj, delta);  // the shared kernel (update.hpp)
       ++collisions_;
       const bool moved_i = reclass(i, vi.squaredNorm());
       const bool moved_j = reclass(j, vj.squaredNorm());

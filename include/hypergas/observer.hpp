@@ -53,7 +53,7 @@ Snapshot make_snapshot(const Particles<D, F>& p) {
   s.dim = D;
   s.n = p.size();
   s.stride = Particles<D, F>::stride;
-  s.velocities = p.velocity_data().data();
+  s.velocities = p.velocity_data().data() + Particles<D, F>::velocity_offset;
   return s;
 }
 

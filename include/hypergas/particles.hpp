@@ -3,9 +3,14 @@
 // A scene states at compile time which optional fields it has (`Features`). A field that is
 // absent is an empty member marked [[no_unique_address]]: it takes no bytes, and every
 // accessor for it is removed by a `requires` clause, so code that would touch it does not
-// compile. Velocities (and positions, when present) live in one flat array each with a
-// fixed stride per particle (`Particles::stride`), padded to a power of two for D = 3, 5, 6
-// so that one particle never straddles more cache lines than it must.
+// compile. The kinematic state lives in one flat array with a fixed stride per particle
+// (`Particles::stride`, doubles):
+//  * velocity-space scenes: the velocity, padded to a power of two for D = 3, 5, 6
+//    (strides 1, 2, 4, 4, 8, 8), so that one particle never straddles two cache lines;
+//  * scenes with positions: one record [position (D), local clock (1), velocity (D)]
+//    padded to a power of two (strides 4, 8, 8, 16, 16, 16): event-driven MD reads all
+//    three of a neighbour at once, and one 64-byte record in 3D is one cache miss where
+//    three separate arrays were three (measured: Engine<3> at N = 32000).
 #pragma once
 
 #include <array>
@@ -47,6 +52,12 @@ using Field = std::conditional_t<Present, T, Absent<Tag>>;
 constexpr int padded_stride(int d) {
   return d == 3 ? 4 : (d == 5 || d == 6) ? 8 : d;
 }
+/// Doubles per [position, clock, velocity] record: 2D + 1 rounded up to a power of two.
+constexpr int record_stride(int d) {
+  int s = 1;
+  while (s < 2 * d + 1) s *= 2;
+  return s;
+}
 
 template <class T>
 using AlignedVector = std::vector<T, Eigen::aligned_allocator<T>>;
@@ -60,12 +71,13 @@ class Particles {
  public:
   static constexpr int dim = D;
   static constexpr Features features = F;
-  static constexpr int stride = detail::padded_stride(D);
+  static constexpr int stride = F.positions ? detail::record_stride(D) : detail::padded_stride(D);
+  /// Offset of the velocity within a particle's record (0 without positions).
+  static constexpr int velocity_offset = F.positions ? D + 1 : 0;
 
   using VecMap = Eigen::Map<Vec<D>>;
   using ConstVecMap = Eigen::Map<const Vec<D>>;
   using FlatArray = detail::AlignedVector<double>;
-  using PositionArray = detail::Field<F.positions, FlatArray, 0>;
   using MassArray = detail::Field<F.masses, std::vector<double>, 1>;
   using RadiusArray = detail::Field<F.radii, std::vector<double>, 2>;
   using SpeciesArray = detail::Field<F.species, std::vector<std::uint8_t>, 3>;
@@ -80,7 +92,6 @@ class Particles {
   void resize(std::size_t n) {
     n_ = n;
     v_.assign(n * stride, 0.0);
-    if constexpr (F.positions) x_.assign(n * stride, 0.0);
     if constexpr (F.masses) w_.assign(n, 1.0);
     if constexpr (F.radii) r_.assign(n, 0.5);
     if constexpr (F.species) {
@@ -92,14 +103,20 @@ class Particles {
   std::size_t size() const { return n_; }
 
   /// Velocity of particle i as an assignable Eigen view.
-  VecMap velocity(std::size_t i) { return VecMap(v_.data() + i * stride); }
-  ConstVecMap velocity(std::size_t i) const { return ConstVecMap(v_.data() + i * stride); }
+  VecMap velocity(std::size_t i) { return VecMap(v_.data() + i * stride + velocity_offset); }
+  ConstVecMap velocity(std::size_t i) const {
+    return ConstVecMap(v_.data() + i * stride + velocity_offset);
+  }
 
   /// Position of particle i (only in scenes with positions).
-  VecMap position(std::size_t i) requires(F.positions) { return VecMap(x_.data() + i * stride); }
+  VecMap position(std::size_t i) requires(F.positions) { return VecMap(v_.data() + i * stride); }
   ConstVecMap position(std::size_t i) const requires(F.positions) {
-    return ConstVecMap(x_.data() + i * stride);
+    return ConstVecMap(v_.data() + i * stride);
   }
+  /// Local clock of particle i: the time at which position(i) holds (event-driven MD
+  /// moves a particle only when it has an event; only in scenes with positions).
+  double& local_time(std::size_t i) requires(F.positions) { return v_[i * stride + D]; }
+  double local_time(std::size_t i) const requires(F.positions) { return v_[i * stride + D]; }
 
   /// Inverse mass of particle i (1/mass; 0 for an infinite mass). Unit mass when the scene
   /// has neither masses nor species: a constant the compiler folds away.
@@ -143,7 +160,8 @@ class Particles {
   }
   double species_inv_mass(int s) const requires(F.species) { return species_w_[s]; }
 
-  /// Raw flat velocity array (n * stride doubles; padding entries stay 0).
+  /// Raw flat state array (n * stride doubles; the velocity of particle i starts at
+  /// i * stride + velocity_offset; padding entries stay 0).
   FlatArray& velocity_data() { return v_; }
   const FlatArray& velocity_data() const { return v_; }
   /// Raw species indices, one byte per particle (only in scenes with species).
@@ -152,14 +170,28 @@ class Particles {
   {
     return s_;
   }
-  PositionArray& position_data() requires(F.positions) { return x_; }
-  const PositionArray& position_data() const requires(F.positions) { return x_; }
+
+  /// Reorders the particles: afterwards particle i is the former particle from[i]
+  /// (`from` must be a permutation of 0..n-1). Engines use it to keep particles that are
+  /// near in space near in memory.
+  void permute(const std::vector<std::uint32_t>& from) {
+    if (from.size() != n_) throw InvalidInput("permute: size mismatch");
+    auto gather = [&](auto& a, std::size_t w) {
+      auto out = a;
+      for (std::size_t i = 0; i < n_; ++i)
+        for (std::size_t k = 0; k < w; ++k) out[i * w + k] = a[from[i] * w + k];
+      a.swap(out);
+    };
+    gather(v_, stride);
+    if constexpr (F.masses) gather(w_, 1);
+    if constexpr (F.radii) gather(r_, 1);
+    if constexpr (F.species) gather(s_, 1);
+  }
 
   /// Bytes of per-particle storage (capacity of all arrays divided by n).
   double bytes_per_particle() const {
     if (n_ == 0) return 0.0;
     std::size_t b = v_.capacity() * sizeof(double);
-    if constexpr (F.positions) b += x_.capacity() * sizeof(double);
     if constexpr (F.masses) b += w_.capacity() * sizeof(double);
     if constexpr (F.radii) b += r_.capacity() * sizeof(double);
     if constexpr (F.species) b += s_.capacity();
@@ -173,8 +205,7 @@ class Particles {
   }
 
   std::size_t n_ = 0;
-  FlatArray v_;
-  [[no_unique_address]] PositionArray x_;
+  FlatArray v_;  // velocities, or [position, clock, velocity] records (see file comment)
   [[no_unique_address]] MassArray w_;
   [[no_unique_address]] RadiusArray r_;
   [[no_unique_address]] SpeciesArray s_;

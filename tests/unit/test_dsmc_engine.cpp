@@ -113,7 +113,8 @@ TEST_CASE("DSMC storage: no positions, 32 bytes per particle in 3D", "[dsmc]") {
   cfg.n = 1000;
   Engine<3, HardSpheres> e(cfg);
   REQUIRE(e.bytes_per_particle() == 32.0);
-  static_assert(std::is_empty_v<Particles<3>::PositionArray>);
+  // The state array holds velocities only: 4 doubles (3 + padding) per particle.
+  static_assert(Particles<3>::stride == 4 && Particles<3>::velocity_offset == 0);
   Engine<6, HardSpheres> e6(cfg);
   REQUIRE(e6.bytes_per_particle() == 64.0);
 }

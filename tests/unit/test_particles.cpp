@@ -28,15 +28,17 @@ concept HasSpecies = requires(Particles<D, F> p) {
 
 // A velocity-space, single-mass scene stores one size and one vector: nothing else.
 using Plain3 = Particles<3, velocity_only>;
-static_assert(std::is_empty_v<Plain3::PositionArray>);
 static_assert(std::is_empty_v<Plain3::MassArray>);
 static_assert(std::is_empty_v<Plain3::RadiusArray>);
 static_assert(std::is_empty_v<Plain3::SpeciesArray>);
 static_assert(std::is_empty_v<Plain3::SpeciesTable>);
 static_assert(sizeof(Plain3) == sizeof(std::size_t) + sizeof(Plain3::FlatArray));
 static_assert(sizeof(Particles<6, velocity_only>) == sizeof(Plain3));
-// Each requested field adds exactly its container.
-static_assert(sizeof(Particles<3, with_positions>) == sizeof(Plain3) + sizeof(Plain3::FlatArray));
+// Positions share the state array: one [position, clock, velocity] record per particle,
+// 8 doubles in 3D against 4 for velocities alone; each other field adds its container.
+static_assert(sizeof(Particles<3, with_positions>) == sizeof(Plain3));
+static_assert(Particles<3, with_positions>::stride == 8 && Plain3::stride == 4);
+static_assert(Particles<6, with_positions>::stride == 16 && Particles<1, with_positions>::stride == 4);
 static_assert(!std::is_empty_v<Particles<3, everything>::MassArray>);
 // Absent fields have no accessors: code that would use them does not compile.
 static_assert(!HasPosition<3, velocity_only>);
@@ -79,4 +81,28 @@ TEST_CASE("fields read back what was written", "[particles]") {
   s.set_species(3, 1);
   REQUIRE(s.inv_mass(3) == 0.1);
   REQUIRE(s.inv_mass(0) == 1.0);
+}
+
+TEST_CASE("position, clock and velocity share a record without aliasing; permute moves all",
+          "[particles]") {
+  Particles<3, Features{.positions = true, .radii = true}> p(3);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double a = static_cast<double>(i);
+    p.position(i) = Vec<3>(a, a + 0.1, a + 0.2);
+    p.local_time(i) = 10.0 + a;
+    p.velocity(i) = Vec<3>(-a, -a - 0.1, -a - 0.2);
+    p.set_radius(i, 0.5 + a);
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double a = static_cast<double>(i);
+    REQUIRE(p.position(i) == Vec<3>(a, a + 0.1, a + 0.2));
+    REQUIRE(p.local_time(i) == 10.0 + a);
+    REQUIRE(p.velocity(i) == Vec<3>(-a, -a - 0.1, -a - 0.2));
+  }
+  p.permute({2, 0, 1});  // new i = old from[i]
+  REQUIRE(p.position(0) == Vec<3>(2.0, 2.1, 2.2));
+  REQUIRE(p.local_time(0) == 12.0);
+  REQUIRE(p.velocity(1) == Vec<3>(-0.0, -0.1, -0.2));
+  REQUIRE(p.radius(2) == 1.5);
+  REQUIRE_THROWS_AS(p.permute({0, 1}), InvalidInput);
 }

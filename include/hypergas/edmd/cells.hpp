@@ -21,6 +21,7 @@
 // L < 2 s_max is rejected: a sphere would touch its own image.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -98,8 +99,27 @@ class Cells {
     return c;
   }
 
+  /// Empties every cell (the grid is kept); particles are then inserted again.
+  void clear() {
+    std::fill(head_.begin(), head_.end(), none);
+    std::fill(next_.begin(), next_.end(), none);
+    std::fill(prev_.begin(), prev_.end(), none);
+  }
+  /// Z-order (Morton) key of a cell: the bits of its D coordinates interleaved, so that
+  /// cells near in space are mostly near in key order along every axis.
+  std::uint64_t morton(std::uint32_t idx) const {
+    const auto c = coords(idx);
+    std::uint64_t key = 0;
+    for (int b = 0; b < 64 / D; ++b)
+      for (int k = 0; k < D; ++k)
+        key |= static_cast<std::uint64_t>((c[k] >> b) & 1) << (b * D + k);
+    return key;
+  }
+
   std::uint32_t cell_of(std::uint32_t i) const { return cell_[i]; }
   std::int32_t head(std::uint32_t c) const { return head_[c]; }
+  /// Asks the processor to fetch cell c's list head (scans read many at once).
+  void prefetch(std::uint32_t c) const { __builtin_prefetch(&head_[c]); }
   std::int32_t next(std::uint32_t i) const { return next_[i]; }
 
   void insert(std::uint32_t i, std::uint32_t c) {

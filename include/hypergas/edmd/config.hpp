@@ -18,6 +18,9 @@ struct Config {
   InitialParams init_params{};  ///< kT, mixture fraction and mass ratio of the state
   double size_ratio = 1.0;    ///< radii scenes: diameter of population 1 (the last
                               ///< round(fraction n) particles) over that of population 0
+  /// Collisions per particle between renumberings of the particles by position (memory
+  /// locality, Engine::reorder; 0 = never). Does not change the trajectories.
+  double reorder_interval = 10.0;
   bool debug_overlap = false;  ///< check all pairs for overlap after every event (O(N^2))
   /// Lubachevsky–Stillinger compression, used when the lattice cannot hold the target
   /// diameters: relative diameter growth per unit time, and a collision budget after which

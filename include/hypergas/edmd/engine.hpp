@@ -94,10 +94,15 @@ class Engine {
     Rng lrng = rng.split(2);
     const LatticeSites<D> sites = lattice_sites<D>(n, L_, lrng);
     for (std::size_t i = 0; i < n; ++i) p_.position(i) = sites.x[i];
-    tl_.assign(n, 0.0);
     image_.assign(n * D, 0);
     cnt_.assign(n, 0);
     ev_.assign(n, Ev{});
+    id_.resize(n);
+    slot_.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) id_[i] = slot_[i] = i;
+    reorder_every_ = cfg.reorder_interval > 0.0
+                         ? static_cast<std::uint64_t>(cfg.reorder_interval * 0.5 * n) + 1
+                         : ~std::uint64_t{0};
     // Lattice gaps below 10% of a diameter make the occupied sites a near-contact network
     // (in 5D, 26% of the D_5 sites give ~10 touching neighbours each) whose collision rate
     // diverges under compression: N = 1000, eta = 0.14 did 3e6 collisions by t = 2e-8.
@@ -137,12 +142,23 @@ class Engine {
   }
   /// Processes exactly one event (a collision, a cell crossing or a re-prediction).
   void step() {
+    if (ncoll_ >= next_reorder_) reorder();
     const std::uint32_t i = q_.top();
     now_ = q_.top_time();
     Ev& e = ev_[i];
     if (e.t_pair <= e.t_cross) {
       const std::int32_t j = e.partner;
       if (j < 0 || cnt_[j] != e.pcount) {
+        ++nstale_;
+        if (e.partner2 >= 0 && cnt_[e.partner2] == e.pcount2) {
+          // The runner-up of i's last scan is still valid: every pair with a particle that
+          // has not changed course since that scan is at least that late, and a pair with
+          // one that has was scanned by it (see the file comment). No rescan needed.
+          e.t_pair = e.t_pair2, e.partner = e.partner2, e.pcount = e.pcount2;
+          e.t_pair2 = never, e.partner2 = -1;
+          q_.update(i, std::min(e.t_pair, e.t_cross));
+          return;
+        }
         advance(i);
         predict(i);
         return;
@@ -152,6 +168,7 @@ class Engine {
       predict(static_cast<std::uint32_t>(j));
       if (debug_) check_overlaps();
     } else {
+      ++ncross_;
       cross(i);
       if (debug_) check_overlaps();
     }
@@ -160,6 +177,10 @@ class Engine {
   // ---- observables --------------------------------------------------------------------
   double time() const { return now_; }
   std::uint64_t collisions() const { return ncoll_; }
+  /// Events other than collisions since the start: cell crossings, and stale pair events
+  /// (the partner collided with someone else first) that only cost a re-prediction.
+  std::uint64_t crossings() const { return ncross_; }
+  std::uint64_t stale_events() const { return nstale_; }
   std::size_t size() const { return p_.size(); }
   double box_side() const { return L_; }
   /// Packing fraction at the current diameters.
@@ -201,18 +222,23 @@ class Engine {
   }
   /// Mean free time per particle, 1 / collision_rate (sigma sqrt(m/kT)).
   double mean_free_time() const { return 1.0 / collision_rate(); }
+  /// The particle store in memory order: the engine renumbers particles by position from
+  /// time to time (reorder()); original_id(i) is the number particle i started with, and
+  /// snapshots (run_until's observer) always use the original numbering.
   const Store& particles() const { return p_; }
-  /// Unwrapped position of particle i at the current time (length).
-  Vec<D> unwrapped_position(std::size_t i) const {
-    Vec<D> x = p_.position(i) + p_.velocity(i) * (now_ - tl_[i]);
+  std::size_t original_id(std::size_t i) const { return id_[i]; }
+  /// Unwrapped position of particle a (original numbering) at the current time (length).
+  Vec<D> unwrapped_position(std::size_t a) const {
+    const std::size_t i = slot_[a];
+    Vec<D> x = p_.position(i) + p_.velocity(i) * (now_ - p_.local_time(i));
     for (int k = 0; k < D; ++k) x[k] += L_ * image_[i * D + k];
     return x;
   }
   /// Persistent bytes per particle of the whole engine state.
   double bytes_per_particle() const {
     const double n = static_cast<double>(size());
-    return p_.bytes_per_particle() + sizeof(double) + D * sizeof(std::int32_t) + sizeof(Ev) +
-           sizeof(std::uint32_t) + EventQueue::bytes_per_particle() +
+    return p_.bytes_per_particle() + D * sizeof(std::int32_t) + sizeof(Ev) +
+           3 * sizeof(std::uint32_t) + EventQueue::bytes_per_particle() +
            cells_.bytes_per_particle(size()) + 0.0 * n;
   }
   int cells_per_side() const { return cells_.per_side(); }
@@ -239,9 +265,9 @@ class Engine {
   void restart_clock() {
     for (std::uint32_t i = 0; i < size(); ++i) advance(i);
     scale_ref_ = diameter_scale();
-    for (auto& t : tl_) t = 0.0;
+    for (std::size_t i = 0; i < size(); ++i) p_.local_time(i) = 0.0;
     now_ = t_scale_ = 0.0;
-    ncoll_ = 0;
+    ncoll_ = ncross_ = nstale_ = next_reorder_ = 0;
     rebuild();
   }
   /// Turns the per-event all-pairs overlap check on or off; returns the previous setting.
@@ -267,7 +293,8 @@ class Engine {
         const double s = contact(i, j);
         if (r.squaredNorm() < s * s * (1.0 - tol))
           throw std::logic_error("EDMD overlap at t = " + std::to_string(now_) + ": particles " +
-                                 std::to_string(i) + ", " + std::to_string(j) + " at distance " +
+                                 std::to_string(id_[i]) + ", " + std::to_string(id_[j]) +
+                                 " at distance " +
                                  std::to_string(r.norm()) + " < " + std::to_string(s));
       }
     }
@@ -277,9 +304,27 @@ class Engine {
   struct Ev {
     double t_pair = never;
     double t_cross = never;
+    double t_pair2 = never;   // second-earliest pair event of the same scan (fallback)
     std::int32_t partner = -1;
     std::uint32_t pcount = 0;
+    std::int32_t partner2 = -1;
+    std::uint32_t pcount2 = 0;
     std::int32_t cross = 0;  // axis * 2 + (1 if upward)
+  };
+  /// The two earliest pair times (relative) and partners found by a scan.
+  struct Top2 {
+    double t1 = never, t2 = never;
+    std::int32_t p1 = -1, p2 = -1;
+    void offer(double t, std::int32_t j) {
+      if (t < t2) {
+        if (t < t1) {
+          t2 = t1, p2 = p1;
+          t1 = t, p1 = j;
+        } else {
+          t2 = t, p2 = j;
+        }
+      }
+    }
   };
 
   /// Contact distance of i and j at unit scale (sum of radii; 1 without radii).
@@ -293,10 +338,10 @@ class Engine {
   double contact(std::size_t i, std::size_t j) const {
     return base_contact(i, j) * diameter_scale();
   }
-  Vec<D> pos_now(std::size_t i) const { return p_.position(i) + p_.velocity(i) * (now_ - tl_[i]); }
+  Vec<D> pos_now(std::size_t i) const { return p_.position(i) + p_.velocity(i) * (now_ - p_.local_time(i)); }
   void advance(std::uint32_t i) {
-    p_.position(i) += p_.velocity(i) * (now_ - tl_[i]);
-    tl_[i] = now_;
+    p_.position(i) += p_.velocity(i) * (now_ - p_.local_time(i));
+    p_.local_time(i) = now_;
   }
 
   void rebuild() {
@@ -324,7 +369,7 @@ class Engine {
     }
     std::vector<double> keys(n);
     for (std::uint32_t i = 0; i < n; ++i) {
-      scan(i, -1, 0, never, -1);
+      scan(i, -1, 0, Top2{});
       keys[i] = std::min(ev_[i].t_pair, ev_[i].t_cross);
     }
     q_.build(keys);
@@ -355,7 +400,7 @@ class Engine {
 
   /// Pair time of i (at now) with j's cell image (position + shift), or never.
   double pair_time(std::uint32_t i, std::uint32_t j, const Vec<D>& shift, double sc) const {
-    const Vec<D> r = p_.position(j) + p_.velocity(j) * (now_ - tl_[j]) + shift - p_.position(i);
+    const Vec<D> r = p_.position(j) + p_.velocity(j) * (now_ - p_.local_time(j)) + shift - p_.position(i);
     const Vec<D> v = p_.velocity(j) - p_.velocity(i);
     const double b = base_contact(i, j);
     return contact_time(r.dot(v), v.squaredNorm(), r.squaredNorm(), b * sc, b * rate_);
@@ -363,28 +408,48 @@ class Engine {
 
   /// Scans neighbour cells of i (all, or the slab `dir` along `axis`), keeping the earliest
   /// pair event if it beats `best` (relative time) with `partner`; then predicts the crossing.
-  void scan(std::uint32_t i, int axis, int dir, double best, std::int32_t partner) {
+  void scan(std::uint32_t i, int axis, int dir, Top2 top) {
     const double sc = diameter_scale();
     if (cells_.per_side() == 1) {
       scan_small_box(i, sc);
       return;
     }
+    // Two passes: list the candidates and prefetch their records, then compute. A record
+    // is one cache line in 3D, and outside the L2 cache a scan's ~13 records arrive
+    // together instead of one miss after another.
     const auto h = cells_.coords(cells_.cell_of(i));
+    cand_.clear();
+    shifts_.clear();
+    visit_.clear();
     cells_.for_each_neighbor(
         h,
         [&](std::uint32_t c, const Vec<D>& shift) {
-          for (std::int32_t j = cells_.head(c); j != Cells<D>::none; j = cells_.next(j)) {
-            if (static_cast<std::uint32_t>(j) == i) continue;
-            const double t = pair_time(i, static_cast<std::uint32_t>(j), shift, sc);
-            if (t < best) best = t, partner = j;
-          }
+          cells_.prefetch(c);
+          visit_.push_back({c, static_cast<std::uint32_t>(shifts_.size())});
+          shifts_.push_back(shift);
         },
         axis, dir);
-    Ev& e = ev_[i];
-    e.t_pair = now_ + best;
-    e.partner = partner;
-    e.pcount = partner >= 0 ? cnt_[partner] : 0;
+    for (const Cand& v : visit_) {
+      for (std::int32_t j = cells_.head(v.j); j != Cells<D>::none; j = cells_.next(j)) {
+        if (static_cast<std::uint32_t>(j) == i) continue;
+        __builtin_prefetch(p_.position(static_cast<std::size_t>(j)).data());
+        cand_.push_back({static_cast<std::uint32_t>(j), v.shift});
+      }
+    }
+    for (const Cand& c : cand_)
+      top.offer(pair_time(i, c.j, shifts_[c.shift], sc), static_cast<std::int32_t>(c.j));
+    store(i, top);
     predict_crossing(i);
+  }
+  /// Records a scan's two earliest pair events (relative times) as i's pair events.
+  void store(std::uint32_t i, const Top2& top) {
+    Ev& e = ev_[i];
+    e.t_pair = now_ + top.t1;
+    e.partner = top.p1;
+    e.pcount = top.p1 >= 0 ? cnt_[top.p1] : 0;
+    e.t_pair2 = now_ + top.t2;
+    e.partner2 = top.p2;
+    e.pcount2 = top.p2 >= 0 ? cnt_[top.p2] : 0;
   }
 
   /// Scan of the one-cell box (fewer than 3 cells per side, cells.hpp). Every other particle
@@ -401,8 +466,7 @@ class Engine {
     const double H = e.t_cross - now_;
     const Vec<D> xi = p_.position(i);
     const Vec<D> vi = p_.velocity(i);
-    double best = never;
-    std::int32_t partner = -1;
+    Top2 top;
     for (std::int32_t j = cells_.head(0); j != Cells<D>::none; j = cells_.next(j)) {
       if (static_cast<std::uint32_t>(j) == i) continue;
       const Vec<D> d = pos_now(static_cast<std::size_t>(j)) - xi;
@@ -424,21 +488,18 @@ class Engine {
       for (;;) {  // odometer over the surviving shift combinations
         Vec<D> shift;
         for (int k = 0; k < D; ++k) shift[k] = opts[k][at[k]];
-        const double t = pair_time(i, static_cast<std::uint32_t>(j), shift, sc);
-        if (t < best) best = t, partner = j;
+        top.offer(pair_time(i, static_cast<std::uint32_t>(j), shift, sc), j);
         int k = 0;
         while (k < D && ++at[k] == cnt[k]) at[k++] = 0;
         if (k == D) break;
       }
     }
-    e.t_pair = now_ + best;
-    e.partner = partner;
-    e.pcount = partner >= 0 ? cnt_[partner] : 0;
+    store(i, top);
   }
 
   /// Full prediction for i (advanced to now) and heap update.
   void predict(std::uint32_t i) {
-    scan(i, -1, 0, never, -1);
+    scan(i, -1, 0, Top2{});
     q_.update(i, std::min(ev_[i].t_pair, ev_[i].t_cross));
   }
 
@@ -483,21 +544,68 @@ class Engine {
     cells_.insert(i, cells_.index(c));
     Ev& e = ev_[i];
     const bool keep = m >= 3 && e.partner >= 0 && cnt_[e.partner] == e.pcount;
-    if (keep) scan(i, k, dir, e.t_pair - now_, e.partner);
-    else scan(i, -1, 0, never, -1);
+    if (keep) {
+      Top2 top{e.t_pair - now_, e.t_pair2 - now_, e.partner, e.partner2};
+      if (top.p2 >= 0 && cnt_[top.p2] != e.pcount2) top.t2 = never, top.p2 = -1;
+      scan(i, k, dir, top);
+    } else {
+      scan(i, -1, 0, Top2{});
+    }
     q_.update(i, std::min(e.t_pair, e.t_cross));
+  }
+
+  /// Renumbers the particles in Z-order of their cells, so that a scan's neighbours lie
+  /// near each other in memory (at N = 256000 the state is larger than the caches, and a
+  /// random numbering makes nearly every neighbour a cache miss). A pure permutation of
+  /// every per-particle array: no particle is advanced and no event re-predicted, so the
+  /// trajectories are unchanged bit for bit. Snapshots and error messages report the
+  /// original numbering (id_).
+  void reorder() {
+    const std::uint32_t n = static_cast<std::uint32_t>(size());
+    next_reorder_ = ncoll_ + reorder_every_;
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> key(n);
+    for (std::uint32_t i = 0; i < n; ++i) key[i] = {cells_.morton(cells_.cell_of(i)), i};
+    std::sort(key.begin(), key.end());
+    std::vector<std::uint32_t> from(n), to(n), cell(n);
+    for (std::uint32_t i = 0; i < n; ++i) from[i] = key[i].second, to[key[i].second] = i;
+    p_.permute(from);
+    auto gather = [&](auto& a, std::size_t w) {
+      auto out = a;
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t k = 0; k < w; ++k) out[i * w + k] = a[from[i] * w + k];
+      a.swap(out);
+    };
+    gather(image_, D);
+    gather(cnt_, 1);
+    gather(ev_, 1);
+    gather(id_, 1);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      Ev& e = ev_[i];
+      if (e.partner >= 0) e.partner = static_cast<std::int32_t>(to[e.partner]);
+      if (e.partner2 >= 0) e.partner2 = static_cast<std::int32_t>(to[e.partner2]);
+      cell[i] = cells_.cell_of(from[i]);
+      slot_[id_[i]] = i;
+    }
+    cells_.clear();
+    for (std::uint32_t i = n; i-- > 0;) cells_.insert(i, cell[i]);  // lists in slot order
+    std::vector<double> keys(n);
+    for (std::uint32_t i = 0; i < n; ++i) keys[i] = std::min(ev_[i].t_pair, ev_[i].t_cross);
+    q_.build(keys);
   }
 
   void sample(double ts, Observer& obs) const {
     const std::size_t n = size();
     constexpr int st = Store::stride;
     std::vector<double> xu(n * st, 0.0);
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t a = 0; a < n; ++a) {  // a: original id, i: its current slot
+      const std::size_t i = slot_[a];
       for (int k = 0; k < D; ++k)
-        xu[i * st + k] = p_.position(i)[k] + p_.velocity(i)[k] * (ts - tl_[i]) +
+        xu[a * st + k] = p_.position(i)[k] + p_.velocity(i)[k] * (ts - p_.local_time(i)) +
                          L_ * image_[i * D + k];
     }
-    Snapshot s = make_snapshot(p_);
+    Store ordered = p_;  // velocities in the original numbering
+    ordered.permute(slot_);
+    Snapshot s = make_snapshot(ordered);
     s.time = ts;
     s.collisions = ncoll_;
     s.collisions_per_particle = 2.0 * static_cast<double>(ncoll_) / static_cast<double>(n);
@@ -506,16 +614,23 @@ class Engine {
   }
 
   Store p_;
-  std::vector<double> tl_;            // local clocks
   std::vector<std::int32_t> image_;   // periodic image counts (unwrapped = x + L image)
   std::vector<std::uint32_t> cnt_;    // per-particle collision counters
   std::vector<Ev> ev_;
+  struct Cand {
+    std::uint32_t j, shift;  // neighbour, index into shifts_
+  };
+  std::vector<Cand> cand_;      // scratch of scan(): candidates
+  std::vector<Cand> visit_;     // scratch of scan(): stencil cells (cell, shift)
+  std::vector<Vec<D>> shifts_;  // scratch of scan(): periodic shift per visited cell
+  std::vector<std::uint32_t> id_, slot_;  // original id of each slot, and its inverse
+  std::uint64_t reorder_every_ = 0, next_reorder_ = 0;  // renumbering period (collisions)
   EventQueue q_;
   Cells<D> cells_;
   double L_ = 0.0, max_base_ = 1.0;
   double now_ = 0.0;
   double scale_ref_ = 1.0, t_scale_ = 0.0, rate_ = 0.0;
-  std::uint64_t ncoll_ = 0, coll_meas_ = 0;
+  std::uint64_t ncoll_ = 0, coll_meas_ = 0, ncross_ = 0, nstale_ = 0;
   double t_meas_ = 0.0, virial_ = 0.0;
   bool debug_ = false;
 };

@@ -23,6 +23,19 @@ bool all_finite(const hypergas::Particles<D, F>& p) {
   return true;
 }
 
+/// Kinetic temperature sum m |v|^2 / (D n_s) of the n_s particles of species s.
+template <int D, hypergas::Features F>
+double species_temperature(const hypergas::Particles<D, F>& p, int s) {
+  double e2 = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.species(i) == s) {
+      e2 += p.velocity(i).squaredNorm() / p.inv_mass(i);
+      ++n;
+    }
+  return e2 / (D * static_cast<double>(n));
+}
+
 /// Relative energy change |E1 - E0| / E0 and momentum change |P1 - P0| / (sum m |v|) of two
 /// states of the same particles.
 template <int D>

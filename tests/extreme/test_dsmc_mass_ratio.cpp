@@ -34,19 +34,6 @@ namespace {
 
 constexpr Features kSpecies{.species = true};
 
-/// Kinetic temperature sum m |v|^2 / (D n_s) of species s.
-template <int D>
-double species_temperature(const Particles<D, kSpecies>& p, int s) {
-  double e2 = 0.0;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.species(i) == s) {
-      e2 += p.velocity(i).squaredNorm() / p.inv_mass(i);
-      ++n;
-    }
-  return e2 / (D * static_cast<double>(n));
-}
-
 /// Runs R replicas with the heavy species cold and checks the heating of the heavy species
 /// against the theory above. `ratio` = m1/m0 (species 1 heavy for ratio > 1).
 template <int D, class Model>
@@ -70,7 +57,8 @@ void check_exchange(double ratio) {
     c.seed = 4242 + 97 * D + r + (ratio > 1.0 ? 0 : 1000);
     Engine<D, Model, kSpecies> e(c);
     const auto& p = e.particles();
-    const double Th0 = species_temperature<D>(p, heavy), Tl0 = species_temperature<D>(p, light);
+    const double Th0 = extreme::species_temperature<D>(p, heavy);
+    const double Tl0 = extreme::species_temperature<D>(p, light);
     const double mh = 1.0 / p.species_inv_mass(heavy), ml = 1.0 / p.species_inv_mass(light);
     const double M = mh + ml, mu = mh * ml / M, a = e.model().exponent();
     const double kappa = std::is_same_v<Model, HardSpheres> ? 4.0 / (D + 1.0) : 1.0;
@@ -84,7 +72,7 @@ void check_exchange(double ratio) {
     const auto c0 = conserved(p);
     e.run_until(t_end);
     const auto [de, dp] = extreme::drifts<D>(c0, conserved(p));
-    rise[r] = species_temperature<D>(p, heavy) - Th0;
+    rise[r] = extreme::species_temperature<D>(p, heavy) - Th0;
     ok[r] = extreme::all_finite(p) && de < 1e-12 && dp < 1e-12 && e.collisions() > 0;
   });
   for (int r = 0; r < R; ++r) REQUIRE(ok[r]);

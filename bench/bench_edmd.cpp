@@ -11,7 +11,7 @@ int main(int argc, char** argv) {
   if (argc == 2 || argc == 3 || argc > 6) {
     std::cerr << "Usage: bench_edmd [dim n packing [collisions [repeats]]]\n"
                  "EDMD collisions per CPU second, one JSON object per line; no arguments:\n"
-                 "3D N = 4000, 32000, 256000 at eta = 0.26 and 6D N = 32000 at eta = 0.1.\n";
+                 "3D N = 4000, 32000, 256000 at eta = 0.26 and 6D N = 32000 at eta = 0.05.\n";
     const std::string a = argc > 1 ? argv[1] : "";
     return a == "-h" || a == "--help" ? 0 : 2;
   }

@@ -110,9 +110,11 @@ class Cells {
   std::uint64_t morton(std::uint32_t idx) const {
     const auto c = coords(idx);
     std::uint64_t key = 0;
-    for (int b = 0; b < 64 / D; ++b)
+    // Coordinates are below m <= 2^31; bits beyond 64/D per axis are dropped (they cannot
+    // occur for fewer than ~2^64 cells).
+    for (int b = 0; b < 64 / D && b < 31; ++b)
       for (int k = 0; k < D; ++k)
-        key |= static_cast<std::uint64_t>((c[k] >> b) & 1) << (b * D + k);
+        key |= ((static_cast<std::uint64_t>(c[k]) >> b) & 1u) << (b * D + k);
     return key;
   }
 

@@ -63,6 +63,16 @@ template <class T>
 using AlignedVector = std::vector<T, Eigen::aligned_allocator<T>>;
 }  // namespace detail
 
+/// Reorders an array of records of `width` entries each: afterwards record i is the former
+/// record from[i] (`from` a permutation of the record indices).
+template <class Array>
+void permute_records(Array& a, const std::vector<std::uint32_t>& from, std::size_t width) {
+  Array out = a;
+  for (std::size_t i = 0; i < from.size(); ++i)
+    for (std::size_t k = 0; k < width; ++k) out[i * width + k] = a[from[i] * width + k];
+  a.swap(out);
+}
+
 /// Particle storage for `n` particles in D dimensions with optional fields `F`.
 /// Units are those of the engine that owns it (see the engines' docs).
 template <int D, Features F = Features{}>
@@ -176,16 +186,10 @@ class Particles {
   /// near in space near in memory.
   void permute(const std::vector<std::uint32_t>& from) {
     if (from.size() != n_) throw InvalidInput("permute: size mismatch");
-    auto gather = [&](auto& a, std::size_t w) {
-      auto out = a;
-      for (std::size_t i = 0; i < n_; ++i)
-        for (std::size_t k = 0; k < w; ++k) out[i * w + k] = a[from[i] * w + k];
-      a.swap(out);
-    };
-    gather(v_, stride);
-    if constexpr (F.masses) gather(w_, 1);
-    if constexpr (F.radii) gather(r_, 1);
-    if constexpr (F.species) gather(s_, 1);
+    permute_records(v_, from, stride);
+    if constexpr (F.masses) permute_records(w_, from, 1);
+    if constexpr (F.radii) permute_records(r_, from, 1);
+    if constexpr (F.species) permute_records(s_, from, 1);
   }
 
   /// Bytes of per-particle storage (capacity of all arrays divided by n).

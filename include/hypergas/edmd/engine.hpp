@@ -577,16 +577,10 @@ class Engine {
     std::vector<std::uint32_t> from(n), to(n), cell(n);
     for (std::uint32_t i = 0; i < n; ++i) from[i] = key[i].second, to[key[i].second] = i;
     p_.permute(from);
-    auto gather = [&](auto& a, std::size_t w) {
-      auto out = a;
-      for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t k = 0; k < w; ++k) out[i * w + k] = a[from[i] * w + k];
-      a.swap(out);
-    };
-    gather(image_, D);
-    gather(cnt_, 1);
-    gather(ev_, 1);
-    gather(id_, 1);
+    permute_records(image_, from, D);
+    permute_records(cnt_, from, 1);
+    permute_records(ev_, from, 1);
+    permute_records(id_, from, 1);
     for (std::uint32_t i = 0; i < n; ++i) {
       Ev& e = ev_[i];
       if (e.partner >= 0) e.partner = static_cast<std::int32_t>(to[e.partner]);

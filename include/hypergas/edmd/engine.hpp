@@ -407,7 +407,8 @@ class Engine {
   }
 
   /// Pair time of i (at now) with j's cell image (position + shift), or never.
-  double pair_time(std::uint32_t i, std::uint32_t j, const Vec<D>& shift, double sc) const {
+  [[gnu::always_inline]] double pair_time(std::uint32_t i, std::uint32_t j, const Vec<D>& shift,
+                                          double sc) const {
     const Vec<D> r = p_.position(j) + p_.velocity(j) * (now_ - p_.local_time(j)) + shift - p_.position(i);
     const Vec<D> v = p_.velocity(j) - p_.velocity(i);
     const double b = base_contact(i, j);
@@ -440,7 +441,9 @@ class Engine {
     for (const Cand& v : visit_) {
       for (std::int32_t j = cells_.head(v.j); j != Cells<D>::none; j = cells_.next(j)) {
         if (static_cast<std::uint32_t>(j) == i) continue;
-        __builtin_prefetch(p_.position(static_cast<std::size_t>(j)).data());
+        const double* rec = p_.position(static_cast<std::size_t>(j)).data();
+        __builtin_prefetch(rec);
+        if constexpr (Store::stride > 8) __builtin_prefetch(rec + 8);  // 4D-6D: 2 lines
         cand_.push_back({static_cast<std::uint32_t>(j), v.shift});
       }
     }

@@ -1,5 +1,6 @@
 // bench_edmd: EDMD collisions per second (one core) for the cases; JSON lines.
-// Usage: bench_edmd [dim n packing collisions repeats]   (no arguments: the default cases)
+// Usage: bench_edmd [dim n packing [collisions [repeats [calendar|heap]]]]
+// (no arguments: the default cases; the last argument picks the event queue).
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -8,8 +9,9 @@
 
 int main(int argc, char** argv) {
   using namespace hypergas::bench;
-  if (argc == 2 || argc == 3 || argc > 6) {
-    std::cerr << "Usage: bench_edmd [dim n packing [collisions [repeats]]]\n"
+  const std::string queue = argc > 6 ? argv[6] : "calendar";
+  if (argc == 2 || argc == 3 || argc > 7 || (queue != "calendar" && queue != "heap")) {
+    std::cerr << "Usage: bench_edmd [dim n packing [collisions [repeats [calendar|heap]]]]\n"
                  "EDMD collisions per CPU second, one JSON object per line; no arguments:\n"
                  "3D N = 4000, 32000, 256000 at eta = 0.26 and 6D N = 32000 at eta = 0.05.\n";
     const std::string a = argc > 1 ? argv[1] : "";
@@ -23,6 +25,7 @@ int main(int argc, char** argv) {
       c.packing = std::atof(argv[3]);
       if (argc >= 5) c.collisions = static_cast<std::uint64_t>(std::atoll(argv[4]));
       if (argc >= 6) c.repeats = std::atoi(argv[5]);
+      c.heap = queue == "heap";
       run_edmd_bench(c, std::cout);
       return 0;
     }

@@ -30,6 +30,7 @@ struct EdmdCase {
   int repeats = 3;
   double warmup = 2.0;  ///< collisions per particle before timing
   std::uint64_t seed = 1;
+  bool heap = false;  ///< time the binary-heap event queue instead of the calendar queue
 };
 
 namespace detail {
@@ -40,7 +41,7 @@ inline double cpu_seconds() {
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-template <int D>
+template <int D, class Queue>
 void edmd_case(const EdmdCase& c, std::ostream& out) {
   std::vector<double> rates;
   for (int r = 0; r < c.repeats; ++r) {
@@ -48,7 +49,7 @@ void edmd_case(const EdmdCase& c, std::ostream& out) {
     cfg.n = c.n;
     cfg.packing = c.packing;
     cfg.seed = c.seed + static_cast<std::uint64_t>(r);
-    edmd::Engine<D> e(cfg);
+    edmd::Engine<D, Features{.positions = true}, Queue> e(cfg);
     const auto warm = static_cast<std::uint64_t>(c.warmup * static_cast<double>(c.n) / 2.0);
     while (e.collisions() < warm) e.step();
     e.reset_observables();
@@ -63,34 +64,37 @@ void edmd_case(const EdmdCase& c, std::ostream& out) {
     rates.push_back(rate);
     char buf[512];
     std::snprintf(buf, sizeof buf,
-                  "{\"bench\":\"edmd\",\"dim\":%d,\"n\":%zu,\"packing\":%.6g,\"repeat\":%d,"
+                  "{\"bench\":\"edmd\",\"queue\":\"%s\",\"dim\":%d,\"n\":%zu,"
+                  "\"packing\":%.6g,\"repeat\":%d,"
                   "\"collisions\":%llu,\"wall_s\":%.4f,\"cpu_s\":%.4f,\"collisions_per_s\":%.1f,"
                   "\"bytes_per_particle\":%.1f,\"cells_per_side\":%d,\"Z\":%.5f}",
-                  D, c.n, c.packing, r, static_cast<unsigned long long>(c.collisions), wall, cpu,
+                  c.heap ? "heap" : "calendar", D, c.n, c.packing, r,
+                  static_cast<unsigned long long>(c.collisions), wall, cpu,
                   rate, e.bytes_per_particle(), e.cells_per_side(), e.pressure_Z());
     out << buf << std::endl;
   }
   std::sort(rates.begin(), rates.end());
   char buf[256];
   std::snprintf(buf, sizeof buf,
-                "{\"bench\":\"edmd\",\"stat\":\"median\",\"dim\":%d,\"n\":%zu,\"packing\":%.6g,"
-                "\"repeats\":%d,\"collisions_per_s\":%.1f}",
-                D, c.n, c.packing, c.repeats, rates[rates.size() / 2]);
+                "{\"bench\":\"edmd\",\"stat\":\"median\",\"queue\":\"%s\",\"dim\":%d,"
+                "\"n\":%zu,\"packing\":%.6g,\"repeats\":%d,\"collisions_per_s\":%.1f}",
+                c.heap ? "heap" : "calendar", D, c.n, c.packing, c.repeats,
+                rates[rates.size() / 2]);
   out << buf << std::endl;
 }
 }  // namespace detail
 
 /// Runs one case (dimension 1..6 dispatched here) and prints its JSON lines to `out`.
 inline void run_edmd_bench(const EdmdCase& c, std::ostream& out) {
-  switch (c.dim) {
-    case 1: detail::edmd_case<1>(c, out); break;
-    case 2: detail::edmd_case<2>(c, out); break;
-    case 3: detail::edmd_case<3>(c, out); break;
-    case 4: detail::edmd_case<4>(c, out); break;
-    case 5: detail::edmd_case<5>(c, out); break;
-    case 6: detail::edmd_case<6>(c, out); break;
-    default: throw InvalidInput("bench: dimension must be 1..6");
-  }
+  if (c.dim < 1 || c.dim > 6) throw InvalidInput("bench: dimension must be 1..6");
+  for_each_dim([&](auto tag) {
+    constexpr int D = decltype(tag)::value;
+    if (D != c.dim) return;
+    if (c.heap)
+      detail::edmd_case<D, edmd::EventQueue>(c, out);
+    else
+      detail::edmd_case<D, edmd::CalendarQueue>(c, out);
+  });
 }
 
 /// The cases: 3D at eta = 0.26 for N = 4000, 32000, 256000 (DynamO anchors 125-145k,

@@ -26,8 +26,8 @@ namespace hypergas::edmd {
 
 /// Grows the diameter scale of `e` to `target_scale` (dimensionless, 1 = nominal diameters)
 /// at relative rate cfg.growth_rate per unit time, keeping the kinetic temperature.
-template <int D, Features F>
-void compress(Engine<D, F>& e, double target_scale, const Config& cfg) {
+template <class E>
+void compress(E& e, double target_scale, const Config& cfg) {
   if (!(cfg.growth_rate > 0.0)) throw InvalidInput("compression growth rate must be > 0");
   const double kT = e.temperature();
   const std::uint64_t c0 = e.collisions();

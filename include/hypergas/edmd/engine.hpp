@@ -14,16 +14,21 @@
 //   e.reset_observables();               // start a new measurement window now
 //   edmd::jamming_packing(D)             // (box.hpp) largest --packing accepted
 //
-// Engine<D, F>: F must have positions; F.species (or F.masses) gives two masses, F.radii
-// two sizes (Config::size_ratio). Units: sigma = 1, m = 1, kT = 1 by default.
+// Engine<D, F, Queue>: F must have positions; F.species (or F.masses) gives two masses,
+// F.radii two sizes (Config::size_ratio). Queue is the event queue: CalendarQueue (default,
+// calendar_queue.hpp) or EventQueue (the indexed binary heap, event_queue.hpp); both hold one
+// entry per particle and give identical trajectories up to ties. Units: sigma = 1, m = 1,
+// kT = 1 by default.
 //
 // Algorithm: each particle keeps a local clock (its position is stored at the time of its
 // last event), its two earliest predicted pair events (time, partner, partner's event
-// counter) and one cell-crossing time; the earliest is its key in an indexed binary heap. A
+// counter) and one cell-crossing time; the earliest is its key in the event queue. A
 // pair event is valid only if the partner's counter is unchanged (lazy invalidation); when
 // the first is invalid the runner-up is used if still valid, else the particle is scanned
 // again. Crossing a cell keeps still-valid pair events and scans only the newly adjacent
-// slab of cells. An event costs O(neighbours + log N).
+// slab of cells. An event costs O(neighbours) with the calendar queue (O(neighbours +
+// log N) with the heap; measured at 3D, eta = 0.26: equal speed at N <= 256000, the
+// calendar 8-20 % faster at N = 1e6).
 //
 // Memory: position, clock and velocity of a particle are one record (one cache line in
 // 3D, particles.hpp); a scan first lists its candidates and prefetches their records,
@@ -49,6 +54,7 @@
 #include "hypergas/edmd/box.hpp"
 #include "hypergas/edmd/cells.hpp"
 #include "hypergas/edmd/config.hpp"
+#include "hypergas/edmd/calendar_queue.hpp"
 #include "hypergas/edmd/event_queue.hpp"
 #include "hypergas/edmd/lattice.hpp"
 #include "hypergas/edmd/pair_time.hpp"
@@ -58,14 +64,11 @@
 
 namespace hypergas::edmd {
 
-template <int D, Features F>
-class Engine;
-
-template <int D, Features F>
-void compress(Engine<D, F>& e, double target_scale, const Config& cfg);
+template <class E>
+void compress(E& e, double target_scale, const Config& cfg);
 
 /// Hard-sphere EDMD engine (see the file comment). D in 1..6.
-template <int D, Features F = Features{.positions = true}>
+template <int D, Features F = Features{.positions = true}, class Queue = CalendarQueue>
 class Engine {
   static_assert(F.positions, "the EDMD engine needs Features{.positions = true}");
 
@@ -246,7 +249,7 @@ class Engine {
   double bytes_per_particle() const {
     const double n = static_cast<double>(size());
     return p_.bytes_per_particle() + D * sizeof(std::int32_t) + sizeof(Ev) +
-           3 * sizeof(std::uint32_t) + EventQueue::bytes_per_particle() +
+           3 * sizeof(std::uint32_t) + Queue::bytes_per_particle() +
            cells_.bytes_per_particle(size()) + 0.0 * n;
   }
   int cells_per_side() const { return cells_.per_side(); }
@@ -508,7 +511,7 @@ class Engine {
     store(i, top);
   }
 
-  /// Full prediction for i (advanced to now) and heap update.
+  /// Full prediction for i (advanced to now) and queue update.
   void predict(std::uint32_t i) {
     scan(i, -1, 0, Top2{});
     q_.update(i, std::min(ev_[i].t_pair, ev_[i].t_cross));
@@ -630,7 +633,7 @@ class Engine {
   std::vector<Vec<D>> shifts_;  // scratch of scan(): periodic shift per visited cell
   std::vector<std::uint32_t> id_, slot_;  // original id of each slot, and its inverse
   std::uint64_t reorder_every_ = 0, next_reorder_ = 0;  // renumbering period (collisions)
-  EventQueue q_;
+  Queue q_;
   Cells<D> cells_;
   double L_ = 0.0, max_base_ = 1.0;
   double now_ = 0.0;

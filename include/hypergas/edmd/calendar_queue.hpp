@@ -1,0 +1,134 @@
+// hypergas/edmd/calendar_queue.hpp -- an indexed calendar queue of per-particle event times
+// (Brown 1988, CACM 31:10; for event-driven MD: Paul 2007, J. Comput. Phys. 221:615).
+//
+// Same interface and one-entry-per-particle contract as edmd::EventQueue (the binary heap):
+// build, top, top_time, time_of, update. Time is cut into buckets of width w covering one
+// "year" [base, base + B w); each bucket is an unsorted doubly linked list of particle ids,
+// events beyond the year wait in an overflow list. The earliest event is the minimum of the
+// current bucket (a few entries, found by a scan and cached); update unlinks and relinks in
+// O(1). When the year is used up, the calendar is rebuilt from all entries with a new base
+// (the earliest time) and a new width: w = 4 <t - t_min> / N, so that a few entries share a
+// bucket near the front and a year spans ~4 mean event horizons (the overflow is the tail
+// beyond that). The rebuild is O(N) work once per ~4N events. Width factors 1, 2, 4, 8 were
+// measured (3D, eta = 0.26, N = 1e6): 4 was fastest, 8 slowest.
+//
+// Event times handed in are never earlier than the current top (EDMD schedules events at or
+// after `now`); a time that rounds into an earlier bucket is filed in the current one.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace hypergas::edmd {
+
+/// Calendar queue over particle ids 0..n-1 keyed by event time.
+class CalendarQueue {
+ public:
+  /// Builds the calendar from `times[i]` for every particle i (O(n)).
+  void build(const std::vector<double>& times) {
+    const auto n = static_cast<std::uint32_t>(times.size());
+    t_ = times;
+    next_.assign(n, none);
+    prev_.assign(n, none);
+    bucket_.assign(n, 0);
+    rebuild();
+  }
+  bool empty() const { return t_.empty(); }
+  std::size_t size() const { return t_.size(); }
+  /// Particle with the earliest event, and that time.
+  std::uint32_t top() {
+    settle();
+    return static_cast<std::uint32_t>(min_);
+  }
+  double top_time() {
+    settle();
+    return t_[static_cast<std::uint32_t>(min_)];
+  }
+  double time_of(std::uint32_t id) const { return t_[id]; }
+  /// Sets the event time of particle `id`.
+  void update(std::uint32_t id, double t) {
+    unlink(id);
+    if (static_cast<std::int32_t>(id) == min_) min_ = none;
+    t_[id] = t;
+    link(id);
+  }
+  /// Bytes per particle (time, two links, bucket index).
+  static constexpr double bytes_per_particle() {
+    return sizeof(double) + 3 * sizeof(std::int32_t);
+  }
+
+ private:
+  static constexpr std::int32_t none = -1;
+
+  std::uint32_t bucket_for(double t) const {
+    const double x = (t - base_) * inv_w_;
+    if (!(x < static_cast<double>(nb_))) return nb_;  // overflow (also +inf)
+    return std::max(cur_, x > 0.0 ? static_cast<std::uint32_t>(x) : 0u);
+  }
+  void link(std::uint32_t id) {
+    const std::uint32_t b = bucket_for(t_[id]);
+    bucket_[id] = b;
+    const std::int32_t h = head_[b];
+    next_[id] = h;
+    prev_[id] = none;
+    if (h != none) prev_[h] = static_cast<std::int32_t>(id);
+    head_[b] = static_cast<std::int32_t>(id);
+    // A cached minimum stays the minimum unless this entry is earlier.
+    if (min_ != none && t_[id] < t_[static_cast<std::uint32_t>(min_)])
+      min_ = static_cast<std::int32_t>(id);
+  }
+  void unlink(std::uint32_t id) {
+    const std::int32_t p = prev_[id], nx = next_[id];
+    if (p != none) next_[p] = nx;
+    else head_[bucket_[id]] = nx;
+    if (nx != none) prev_[nx] = p;
+  }
+  /// Makes min_ the earliest entry: scans the current bucket, advancing (and starting a new
+  /// year) while it is empty.
+  void settle() {
+    while (min_ == none) {
+      std::int32_t k = head_[cur_];
+      if (k == none) {
+        if (++cur_ == nb_) rebuild();
+        continue;
+      }
+      min_ = k;
+      for (k = next_[k]; k != none; k = next_[k])
+        if (t_[k] < t_[min_]) min_ = k;
+    }
+  }
+  /// New year: base = earliest time, width from the mean lead of the finite times.
+  void rebuild() {
+    const std::size_t n = t_.size();
+    double lo = INFINITY, sum = 0.0;
+    std::size_t finite = 0;
+    for (double t : t_)
+      if (std::isfinite(t)) lo = std::min(lo, t);
+    for (double t : t_)
+      if (std::isfinite(t)) sum += t - lo, ++finite;
+    nb_ = static_cast<std::uint32_t>(std::max<std::size_t>(n, 1));
+    const double mean = finite ? sum / static_cast<double>(finite) : 0.0;
+    double w = 4.0 * mean / static_cast<double>(nb_);
+    if (!(w > 0.0) || !std::isfinite(w)) w = 1.0;
+    base_ = std::isfinite(lo) ? lo : 0.0;
+    inv_w_ = 1.0 / w;
+    cur_ = 0;
+    min_ = none;
+    head_.assign(nb_ + 1, none);
+    for (std::uint32_t i = 0; i < n; ++i) link(i);
+    if (!std::isfinite(lo) && n > 0) min_ = static_cast<std::int32_t>(head_[nb_]);  // all never
+  }
+
+  std::vector<double> t_;
+  std::vector<std::int32_t> next_, prev_;
+  std::vector<std::uint32_t> bucket_;
+  std::vector<std::int32_t> head_;  // nb_ buckets + the overflow list
+  std::uint32_t nb_ = 0, cur_ = 0;
+  std::int32_t min_ = none;
+  double base_ = 0.0, inv_w_ = 1.0;
+};
+
+}  // namespace hypergas::edmd

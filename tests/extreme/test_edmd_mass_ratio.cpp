@@ -34,6 +34,13 @@
 // the run time.
 // The lattice start has no light particle near a heavy one; the run first lets the light
 // ones fly a few lattice spacings (the heavy ones stay cold) and then measures.
+// D = 1 is not a case of this theory, and is left out. Rods cannot pass each other: each
+// light rod is caged between two heavy ones, and the light rods in a cage act as free points
+// bouncing between two nearly fixed walls. A heavy rod then feels the pressure of its left
+// cage minus that of its right cage, which differ by O(1) from cage to cage, so it is
+// accelerated steadily (the adiabatic piston): its kinetic energy grows like t^2 from that
+// mean force before the t^1 heating by collision noise that the exchange rate describes,
+// and the split depends on the random cage contents, not on a rate constant.
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -55,9 +55,9 @@ class CalendarQueue {
     t_[id] = t;
     link(id);
   }
-  /// Bytes per particle (time, two links, bucket index).
+  /// Bytes per particle (time, two links, bucket index, and one bucket head per particle).
   static constexpr double bytes_per_particle() {
-    return sizeof(double) + 3 * sizeof(std::int32_t);
+    return sizeof(double) + 4 * sizeof(std::int32_t);
   }
 
  private:

@@ -20,15 +20,26 @@
 //               the delta shell for steps dt, minus the exact scheme's value (the time-
 //               continuous process; no closed form exists for hard spheres), in ntc.csv; the
 //               order p of |bias| ~ dt^p is fitted where the bias exceeds 3 standard errors.
-//   eos         EDMD, 3D hard spheres at eta = 0.2618, N = 1000: the reduced pressure Z from
-//               the collision virial over a window of T time units (after the lattice has
-//               melted, t = 2), against Carnahan-Starling (N. F. Carnahan & K. E. Starling,
-//               J. Chem. Phys. 51, 635 (1969); within ~1e-3 of simulation at this packing),
-//               relative RMS error over replicas. It falls as (run time)^(-1/2) until it
-//               meets a floor of ~3e-3: at N = 1000 this code gives Z = 3.270-3.274 (six
-//               runs of 50 time units, se 0.0015), at N = 1e6 3.2686, against CS 3.2624;
-//               the floor is the finite-N bias plus CS's own error at this packing. The
-//               slope is fitted over the statistical part, windows T <= 4.
+//   eos         EDMD, N = 1000, D = 1..4: the reduced pressure Z from the collision virial
+//               over a window of T time units (after the lattice has melted, t = 2), against
+//                 1D rods, eta = 0.5: Tonks' exact Z = 1/(1 - eta) (L. Tonks, Phys. Rev. 50,
+//                    955 (1936)); exact for any N with kT = 2 E_kin/N, so no floor. Equal
+//                    rods only exchange velocities: the gas is N free points in the free
+//                    length L - N sigma (integrable), the collision count of a window is
+//                    fixed up to end effects, which add a 1/T term: the error falls at
+//                    least as fast as T^(-1/2) (slopes -0.6 to -0.8 measured);
+//                 2D disks, eta = 0.3: Henderson's Z = (1 + eta^2/8)/(1 - eta)^2 (Mol. Phys.
+//                    30, 971 (1975); ~2e-3 from simulation);
+//                 3D, eta = 0.2618: Carnahan-Starling (J. Chem. Phys. 51, 635 (1969); within
+//                    ~1e-3 of simulation here). At N = 1000 this code gives Z = 3.270-3.274
+//                    (six runs of 50 time units, se 0.0015), at N = 1e6 3.2686, against CS
+//                    3.2624: a floor of ~3e-3 from the finite-N bias plus CS's own error;
+//                 4D, x = B2 rho = 0.2 (eta = 0.025): the virial series 1 + x + (B3/B2^2) x^2,
+//                    B3/B2^2 = 4/3 - 3 sqrt(3)/(2 pi) (Luban & Baram, J. Chem. Phys. 76, 3233
+//                    (1982)); truncation < 0.0027 (Clisby & McCoy, J. Stat. Phys. 122, 15
+//                    (2006)), a floor of ~2e-3 relative.
+//               Relative RMS error over replicas; it falls as (run time)^(-1/2) until such a
+//               floor. The slope is fitted over the statistical part, windows T <= 4.
 //
 // Exact finite-N equilibrium. At zero momentum and fixed energy the equilibrium of the
 // Kac process is uniform on the energy sphere in the n = D (N - 1) dimensional space of
@@ -55,9 +66,11 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <thread>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "hypergas/dsmc/engine.hpp"
@@ -291,6 +304,19 @@ inline void add_slope(ReportResult& res, const std::string& study, const std::st
   res.slopes.push_back({study, engine, dim, b, se, static_cast<int>(x.size())});
 }
 
+/// Packing fraction and reference Z of the EDMD study in dimension D (file comment).
+inline std::pair<double, double> eos_reference(int D) {
+  switch (D) {
+    case 1: return {0.5, 1.0 / (1.0 - 0.5)};         // Tonks: exact
+    case 2: return {0.3, edmd::henderson_Z(0.3)};    // Henderson
+    case 3: return {0.2618, edmd::carnahan_starling_Z(0.2618)};
+    default: {                                       // 4D: virial series to B3
+      const double x = 0.2, b3 = 4.0 / 3.0 - 3.0 * std::sqrt(3.0) / (2.0 * std::numbers::pi);
+      return {x / 8.0, 1.0 + x + b3 * x * x};
+    }
+  }
+}
+
 }  // namespace detail
 
 /// Runs the studies of the file comment and returns their results (nothing is written).
@@ -429,32 +455,39 @@ inline ReportResult run_report_study(const ReportOptions& o) {
     if (lx.size() >= 2) std::tie(res.ntc_order, res.ntc_order_se) = detail::fit_line(lx, ly);
   }
 
-  // 5. EDMD: 3D Z against Carnahan-Starling; run time grows with the measurement window.
-  say("EDMD 3D pressure Z against Carnahan-Starling, eta = 0.2618");
+  // 5. EDMD: Z against its reference in D = 1..4; run time grows with the measurement window.
+  say("EDMD pressure Z against Tonks (1D), Henderson (2D), Carnahan-Starling (3D), virial (4D)");
   {
-    const double eta = 0.2618, zcs = edmd::carnahan_starling_Z(eta);
     const std::vector<double> Te = q ? std::vector<double>{0.25, 1, 4}
                                      : std::vector<double>{0.25, 1, 4, 16, 64};
     const int Re = 16;
-    for (double T : Te) {
-      std::vector<double> z(Re), cpu(Re);
-      detail::parallel_replicas(Re, o.threads, [&](int r) {
-        edmd::Config cfg;
-        cfg.n = 1000;
-        cfg.packing = eta;
-        cfg.seed = dsmc::replica_seed(o.seed + 3000 + static_cast<std::uint64_t>(T), r);
-        edmd::Engine<3> e(cfg);
-        e.run_until(2.0);  // melt the lattice start
-        e.reset_observables();
-        const double c0 = detail::thread_cpu_s();
-        e.run_until(2.0 + T);
-        cpu[r] = detail::thread_cpu_s() - c0;
-        z[r] = e.pressure_Z();
-      });
-      const auto [err, se] = detail::rel_rms(z, zcs);
-      res.points.push_back({"eos", "edmd", 3, T, detail::mean(cpu), err, se, Re});
-    }
-    detail::add_slope(res, "eos", "edmd", 3, 4.0);  // statistical regime (file comment)
+    for_each_dim([&](auto tag) {
+      constexpr int D = decltype(tag)::value;
+      if constexpr (D <= 4) {
+        const auto [eta, zref] = detail::eos_reference(D);
+        for (double T : Te) {
+          std::vector<double> z(Re), cpu(Re);
+          detail::parallel_replicas(Re, o.threads, [&](int r) {
+            edmd::Config cfg;
+            cfg.n = 1000;
+            cfg.packing = eta;
+            cfg.seed = dsmc::replica_seed(
+                o.seed + 3000 + 100 * static_cast<std::uint64_t>(D) + static_cast<std::uint64_t>(T),
+                r);
+            edmd::Engine<D> e(cfg);
+            e.run_until(2.0);  // melt the lattice start
+            e.reset_observables();
+            const double c0 = detail::thread_cpu_s();
+            e.run_until(2.0 + T);
+            cpu[r] = detail::thread_cpu_s() - c0;
+            z[r] = e.pressure_Z();
+          });
+          const auto [err, se] = detail::rel_rms(z, zref);
+          res.points.push_back({"eos", "edmd", D, T, detail::mean(cpu), err, se, Re});
+        }
+        detail::add_slope(res, "eos", "edmd", D, 4.0);  // statistical regime (file comment)
+      }
+    });
   }
   res.total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return res;

@@ -4,13 +4,13 @@
 # Reads work_precision.csv, finite_n.csv, ntc.csv and slopes.gp (fitted slopes).
 set datafile separator ','
 set datafile columnheaders
-set terminal pngcairo size 1800,1100 font ',11'
+set terminal pngcairo size 2400,1100 font ',11'
 set output 'work_precision.png'
 do for [d=1:6] {
   eval sprintf('slope_stat_dsmc_%d = NaN', d)
   eval sprintf('slope_maxwell_dsmc_%d = NaN', d)
+  eval sprintf('slope_eos_edmd_%d = NaN', d)
 }
-slope_eos_edmd_3 = NaN
 ntc_order = -99
 load 'slopes.gp'
 set logscale xy
@@ -18,19 +18,22 @@ set format x '10^{%L}'
 set format y '10^{%L}'
 set key bottom left font ',10'
 set grid
-set multiplot layout 2,2 title 'hypergas: error against run time (errors against exact values)'
+set multiplot layout 2,3 title 'hypergas: error against run time (errors against exact values)'
 
-set title 'statistical error: DSMC equilibrium <(m v^2/kT)^2> (N = 1000) and EDMD pressure'
+set title 'statistical error: DSMC equilibrium <(m v^2/kT)^2> (N = 1000)'
 set xlabel 'run time per replica (s, one core)'
 set ylabel 'relative RMS error'
 plot for [d=1:6] 'work_precision.csv' \
        using (strcol(1) eq 'stat' && $3 == d ? $5 : NaN):6 with linespoints pt 7 \
        title sprintf('D = %d: slope %.2f', d, value(sprintf('slope_stat_dsmc_%d', d))), \
      'work_precision.csv' using (strcol(1) eq 'finite_n' ? $5 : NaN):6 with linespoints \
-       dt 2 lw 2 pt 5 lc rgb 'black' title 'D = 3, N = 200 vs Maxwell-Boltzmann: finite-N plateau', \
-     'work_precision.csv' using (strcol(1) eq 'eos' ? $5 : NaN):6 with linespoints \
-       lw 2 pt 9 lc rgb 'dark-red' \
-       title sprintf('EDMD 3D, N = 1000: Z vs Carnahan-Starling, slope %.2f', slope_eos_edmd_3)
+       dt 2 lw 2 pt 5 lc rgb 'black' title 'D = 3, N = 200 vs Maxwell-Boltzmann: finite-N plateau'
+
+set title 'EDMD pressure Z (N = 1000): 1D Tonks, 2D Henderson, 3D Carnahan-Starling, 4D virial'
+array eos_ref[4] = ['Tonks (exact)', 'Henderson', 'Carnahan-Starling', 'virial to B_3']
+plot for [d=1:4] 'work_precision.csv' \
+       using (strcol(1) eq 'eos' && $3 == d ? $5 : NaN):6 with linespoints lw 2 pt 9 \
+       title sprintf('D = %d vs %s: slope %.2f', d, eos_ref[d], value(sprintf('slope_eos_edmd_%d', d)))
 
 set title 'DSMC Maxwell molecules: <v^4> relaxation rate vs exact (D-1)/(2D)'
 set ylabel 'relative RMS error of the rate'

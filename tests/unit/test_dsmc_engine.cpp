@@ -137,3 +137,33 @@ TEST_CASE("DSMC: bad configurations throw InvalidInput", "[dsmc]") {
   rest.n = 10;
   REQUIRE_THROWS_AS((Engine<2, HardSpheres>(rest, Particles<2>(10))), InvalidInput);
 }
+
+// The engine tests a batch of candidates at once and re-tests those that share a particle
+// with a collision taken before them, or all pending ones when the bound G changes. The
+// self-check re-tests every pending candidate against the state of the moment before each
+// step; a missed re-test shows up as a failure. Small N makes shared particles frequent
+// (N = 3: nearly every later candidate in a batch shares one with a collision), the cube
+// start makes the bound rise while the tail forms (G changes between calls). Deterministic: any
+// failure is a defect, so the bound is exactly 0 (removing the re-test loop gives hundreds).
+TEMPLATE_TEST_CASE_SIG("DSMC batches decide each candidate with the state of its turn", "[dsmc]",
+                       ((int D), D), 1, 3, 6) {
+  for (std::size_t n : {std::size_t(3), std::size_t(5), std::size_t(64)}) {
+    for (Scheme s : {Scheme::exact, Scheme::ntc}) {
+      Config cfg;
+      cfg.n = n;
+      cfg.seed = 7;
+      cfg.scheme = s;
+      cfg.dt = 0.05;
+      cfg.init = InitialState::cube;
+      Engine<D, HardSpheres> hs(cfg);
+      hs.set_self_check(true);
+      hs.run_until(20000.0 / static_cast<double>(n));
+      REQUIRE(hs.collisions() > 5000);
+      REQUIRE(hs.self_check_failures() == 0);
+      Engine<D, VariableHardSpheres> vhs(cfg);  // a = 0.5
+      vhs.set_self_check(true);
+      vhs.run_until(20000.0 / static_cast<double>(n));
+      REQUIRE(vhs.self_check_failures() == 0);
+    }
+  }
+}

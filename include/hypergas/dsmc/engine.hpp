@@ -23,9 +23,11 @@
 // epoch [t, t_end] with constant G the number of candidates is Poisson(Lambda (t_end - t))
 // and their times are uniform order statistics, so no exponential waiting time is drawn per
 // candidate. When an accepted collision raises a speed above the bound, the epoch stops at
-// that candidate; its time is the k-th of M uniform order statistics, t + (t_end - t)
-// Beta(k, M - k + 1) (exact: the marks do not depend on the times), the bound is raised
-// and a new epoch starts there (the Poisson process after a stopping time is fresh).
+// that candidate, the epoch's last one included (until stop 12 a raise at the M-th
+// candidate was left pending and the rest of that epoch ran on the old bound); its time is
+// the k-th of M uniform order statistics, t + (t_end - t) Beta(k, M - k + 1) (exact: the
+// marks do not depend on the times), the bound is raised and a new epoch starts there (the
+// Poisson process after a stopping time is fresh).
 // Maxwell molecules need no majorant: every candidate collides.
 //
 // Bird's no-time-counter scheme (scheme = ntc) instead takes steps of dt: each step draws
@@ -37,15 +39,26 @@
 // solutions of momentum and energy conservation), so the velocity distribution never
 // relaxes; 1D scenes therefore use two species with different masses.
 //
-// Speed: candidate pairs are drawn 32 ahead and their velocities prefetched (random access
-// to N = 1e6 velocities is cache-miss bound); hard spheres accept by comparing squares, so
-// a rejected candidate costs no square root; equal-mass scenes compile the mass weights to
-// 1/2; the velocity array is advised onto transparent huge pages (dsmc/huge_pages.hpp).
-// Observers are called every `every` time units, never per collision.
+// Speed: candidates come in batches of 16. A batch (pairs and acceptance uniforms) is
+// drawn one batch ahead and its velocities prefetched (random access to N = 1e6 velocities
+// is cache-miss bound); then all 16 are tested at once - no velocity changes in between,
+// so the loads overlap and no branch waits on them - and the accepted ones are taken in
+// order (count-trailing-zeros on the acceptance mask). Exactness is kept by re-testing:
+// after a collision, the later candidates of the batch that share one of its two
+// particles; after a change of the bound G, the whole rest of the batch. A self-check mode
+// (set_self_check) re-tests every pending candidate before each step and counts
+// disagreements; tests/unit/test_dsmc_engine.cpp requires zero (and fails without either
+// re-test). The candidates and the scattering directions use xoshiro256++ (FastRng in
+// rng.hpp) kept in registers, not the 128-bit-multiply PCG64 of the rest of the code.
+// Hard spheres accept by comparing squares, so a rejected candidate costs no square root;
+// equal-mass scenes compile the mass weights to 1/2; the velocity array is advised onto
+// transparent huge pages (dsmc/huge_pages.hpp). Observers are called every `every` time
+// units, never per collision.
 #pragma once
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -86,7 +99,8 @@ class Engine {
   /// Starts from the given particles (velocities in units where the species-0 mass is 1);
   /// cfg.n and cfg.init are ignored. Total momentum should be zero (see time_unit.hpp).
   Engine(const Config& cfg, ParticlesT particles)
-      : cfg_(cfg), p_(std::move(particles)), model_(make_model(cfg)), rng_(Rng(cfg.seed).split(2)) {
+      : cfg_(cfg), p_(std::move(particles)), model_(make_model(cfg)), rng_(Rng(cfg.seed).split(2)),
+        pairs_(fast_stream(cfg.seed, 4)), coll_(fast_stream(cfg.seed, 5)) {
     cfg_.n = p_.size();
     validate(cfg_);  // also checks 2 <= n < 2^32
     n_ = static_cast<std::uint32_t>(p_.size());
@@ -94,13 +108,7 @@ class Engine {
     detail::advise_huge_pages(p_.velocity_data().data(),
                               p_.velocity_data().size() * sizeof(double));
     retune(true);
-    double* v = p_.velocity_data().data();
-    for (int k = 0; k < ring; ++k) {
-      const auto [i, j] = draw_pair();
-      ring_i_[k] = i;
-      ring_j_[k] = j;
-      prefetch(v, i, j);
-    }
+    generate(batch_[1 - cur_]);  // the batch after the (empty) current one
   }
 
   /// Advances the process to time t (mean collision times; nothing happens if t <= time()).
@@ -145,13 +153,24 @@ class Engine {
   double bytes_per_particle() const { return p_.bytes_per_particle(); }
   /// Rate constant c: pair rate c |g|^a / (N - 1) per mean collision time.
   double rate_constant() const { return c_; }
+  /// Debug self-check (slow): before each step of the candidate loop, re-tests every
+  /// pending candidate of the current batch with the state of that moment and counts the
+  /// decisions that differ from the batch's (see process()); a correct engine counts 0.
+  void set_self_check(bool on) { self_check_ = on; }
+  std::uint64_t self_check_failures() const { return check_failures_; }
   /// Current majorant bound G >= |g| (velocity units).
   double bound() const { return bound_.bound(); }
   const Config& config() const { return cfg_; }
   const Model& model() const { return model_; }
 
  private:
-  static constexpr int ring = 32;  // candidate pairs drawn ahead (prefetch distance)
+  // Candidates come in batches of B (see the file comment): the next batch is drawn and
+  // its velocities prefetched while the current one is processed (prefetch distance B..2B).
+  static constexpr int B = 16;
+  struct Batch {
+    std::array<std::uint32_t, B> i{}, j{};
+    std::array<double, B> u{};  // acceptance uniforms (models with a majorant)
+  };
 
   static ParticlesT initial_particles(const Config& cfg) {
     validate(cfg);
@@ -166,33 +185,77 @@ class Engine {
     else
       return Model{};
   }
+  static FastRng fast_stream(std::uint64_t seed, std::uint64_t k) {
+    Rng r = Rng(seed).split(k);
+    return FastRng(r);
+  }
 
-  /// Unbiased integer in [0, range) from 32 random bits (Lemire's multiply-shift with
-  /// rejection); redraws fresh bits on rejection.
-  std::uint32_t bounded32(std::uint32_t x, std::uint32_t range) {
+  /// Unbiased integer in [0, range) from 32 random bits x (Lemire's multiply-shift with
+  /// rejection); redraws fresh bits from g on rejection.
+  static std::uint32_t bounded32(FastRng& g, std::uint32_t x, std::uint32_t range) {
     std::uint64_t m = std::uint64_t(x) * range;
     auto l = static_cast<std::uint32_t>(m);
     if (l < range) {
       const std::uint32_t t = (0u - range) % range;
       while (l < t) {
-        x = static_cast<std::uint32_t>(rng_() >> 32);
+        x = static_cast<std::uint32_t>(g() >> 32);
         m = std::uint64_t(x) * range;
         l = static_cast<std::uint32_t>(m);
       }
     }
     return static_cast<std::uint32_t>(m >> 32);
   }
-  /// A uniformly chosen ordered pair of distinct particles.
-  std::pair<std::uint32_t, std::uint32_t> draw_pair() {
-    const std::uint64_t r = rng_();
-    const std::uint32_t i = bounded32(static_cast<std::uint32_t>(r >> 32), n_);
-    std::uint32_t j = bounded32(static_cast<std::uint32_t>(r), n_ - 1);
-    j += (j >= i);
-    return {i, j};
+  /// Draws a batch of B candidates: uniformly chosen ordered pairs of distinct particles
+  /// and their acceptance uniforms; prefetches the pairs' velocities.
+  void generate(Batch& b) {
+    FastRng g = pairs_;  // a local copy stays in registers
+    const double* v = p_.velocity_data().data();
+    const std::uint32_t n = n_;
+    for (int c = 0; c < B; ++c) {
+      const std::uint64_t r = g();
+      const std::uint32_t i = bounded32(g, static_cast<std::uint32_t>(r >> 32), n);
+      std::uint32_t j = bounded32(g, static_cast<std::uint32_t>(r), n - 1);
+      j += (j >= i);
+      b.i[c] = i;
+      b.j[c] = j;
+      if constexpr (Model::needs_majorant) b.u[c] = static_cast<double>(g() >> 11) * 0x1.0p-53;
+      __builtin_prefetch(v + std::size_t(i) * stride, 1);
+      __builtin_prefetch(v + std::size_t(j) * stride, 1);
+    }
+    pairs_ = g;
   }
-  static void prefetch(const double* v, std::uint32_t i, std::uint32_t j) {
-    __builtin_prefetch(v + std::size_t(i) * stride, 1);
-    __builtin_prefetch(v + std::size_t(j) * stride, 1);
+  /// Whether candidate c of batch b is accepted with the velocities of now and bound G.
+  bool test(const Batch& b, int c, double G) const {
+    if constexpr (Model::needs_majorant) {
+      const double* v = p_.velocity_data().data();
+      double g2 = 0.0;
+      for (int d = 0; d < D; ++d) {
+        const double x = v[std::size_t(b.i[c]) * stride + d] - v[std::size_t(b.j[c]) * stride + d];
+        g2 += x * x;
+      }
+      return model_.accept(g2, b.u[c], G);
+    } else {
+      (void)b, (void)c, (void)G;
+      return true;
+    }
+  }
+  /// Self-check: every pending mask bit must equal a fresh test with the state of now.
+  void verify(double G) {
+    for (int c = pos_; c < B; ++c) {
+      const bool fresh = test(batch_[cur_], c, G);
+      if (fresh != bool((mask_ >> c) & 1u)) {
+        ++check_failures_;
+        mask_ ^= 1u << c;
+      }
+    }
+  }
+  /// Tests candidates from..B-1 of the current batch with bound G (sets their mask bits).
+  void test_from(int from, double G) {
+    const Batch& b = batch_[cur_];
+    std::uint32_t mask = mask_ & ((1u << from) - 1u);
+    for (int c = from; c < B; ++c) mask |= std::uint32_t(test(b, c, G)) << c;
+    mask_ = mask;
+    tested_g_ = G;
   }
 
   /// Resets the majorant from an exact scan (when `force` or after enough candidates).
@@ -216,40 +279,67 @@ class Engine {
   /// Processes up to m candidates. Exact: stops after an accepted collision that leaves a
   /// speed above the bound and returns the number processed (raise_to_ holds the new
   /// maximum squared speed). NTC: never stops; records the largest such speed.
+  ///
+  /// Batches: every candidate of the current batch is tested at once (no velocity is
+  /// written in between, so the loads overlap and no branch depends on them); then the
+  /// accepted ones are taken in order. A collision changes two velocities only, so after
+  /// it the later candidates that share a particle with it are tested again; a change of
+  /// the bound G (between calls) re-tests the rest of the batch. Each candidate is thus
+  /// decided with the state at its turn, exactly as one at a time.
   template <bool Exact>
   std::uint64_t process(std::uint64_t m) {
     double* v = p_.velocity_data().data();
     const double G = bound_.bound();
     using Map = Eigen::Map<Vec<D>>;
-    for (std::uint64_t k = 0; k < m; ++k) {
-      const std::uint32_t i = ring_i_[rpos_], j = ring_j_[rpos_];
-      {
-        const auto [a, b] = draw_pair();
-        ring_i_[rpos_] = a;
-        ring_j_[rpos_] = b;
-        prefetch(v, a, b);
-        rpos_ = (rpos_ + 1) & (ring - 1);
+    if (pos_ < B && G != tested_g_) test_from(pos_, G);
+    FastRng rng = coll_;  // scattering directions; a local copy stays in registers
+    std::uint64_t k = 0;
+    while (k < m) {
+      if (pos_ == B) {
+        cur_ = 1 - cur_;
+        generate(batch_[1 - cur_]);
+        test_from(0, G);
+        pos_ = 0;
       }
+      if (self_check_) [[unlikely]] verify(G);
+      const std::uint64_t left = m - k;
+      const std::uint32_t rest = mask_ >> pos_;
+      if (rest == 0 || std::uint64_t(std::countr_zero(rest)) >= left) {
+        // no accepted candidate among the next min(left, B - pos_)
+        const std::uint64_t take = std::min<std::uint64_t>(left, std::uint64_t(B - pos_));
+        pos_ += static_cast<int>(take);
+        k += take;
+        continue;
+      }
+      const int c = pos_ + std::countr_zero(rest);
+      k += static_cast<std::uint64_t>(c - pos_) + 1;
+      pos_ = c + 1;
+      const Batch& b = batch_[cur_];
+      const std::uint32_t i = b.i[c], j = b.j[c];
       Map vi(v + std::size_t(i) * stride), vj(v + std::size_t(j) * stride);
       const Vec<D> g = vi - vj;
-      const double g2 = g.squaredNorm();
-      ++candidates_;
-      if constexpr (Model::needs_majorant) {
-        if (!model_.accept(g2, rng_.uniform(), G)) continue;
-      }
-      const double gn = std::sqrt(g2);
-      const Vec<D> delta = Model::template deflect<D>(g, gn, rng_) - g;
+      const double gn = std::sqrt(g.squaredNorm());
+      const Vec<D> delta = Model::template deflect<D>(g, gn, rng) - g;
       apply_deflection<D>(p_, i, j, vi, vj, delta);
       ++collisions_;
       if constexpr (Model::needs_majorant) {
+        for (int c2 = pos_; c2 < B; ++c2) {
+          const std::uint32_t a = b.i[c2], e = b.j[c2];
+          if ((a == i) | (a == j) | (e == i) | (e == j)) [[unlikely]] {
+            const std::uint32_t bit = 1u << c2;
+            mask_ = test(b, c2, G) ? (mask_ | bit) : (mask_ & ~bit);
+          }
+        }
         const double s2 = std::max(vi.squaredNorm(), vj.squaredNorm());
         if (bound_.exceeded_by(s2)) {
           raise_to_ = std::max(raise_to_, s2);
-          if constexpr (Exact) return k + 1;
+          if constexpr (Exact) break;
         }
       }
     }
-    return m;
+    coll_ = rng;
+    candidates_ += k;
+    return k;
   }
 
   /// Advances to t_end with the configured scheme.
@@ -271,7 +361,8 @@ class Engine {
       const std::uint64_t m = pois(rng_);
       const std::uint64_t k = process<true>(m);
       since_scan_ += k;
-      if (k == m) {
+      // a raise stops the epoch at its candidate, the m-th included (raise_to_ is set)
+      if (raise_to_ == 0.0) {
         time_ = capped ? time_ + h : t_end;
       } else {
         // k-th of m uniform order statistics on [time_, time_ + h].
@@ -332,8 +423,15 @@ class Engine {
   double time_ = 0.0;
   double observed_at_ = -1.0;
   std::uint64_t collisions_ = 0, candidates_ = 0, since_scan_ = 0;
-  std::array<std::uint32_t, ring> ring_i_{}, ring_j_{};
-  unsigned rpos_ = 0;
+  FastRng pairs_;                  // the candidates' random stream
+  FastRng coll_;                   // the collisions' random stream (scattering)
+  std::array<Batch, 2> batch_{};   // the current batch and the next one
+  int cur_ = 0;                    // index of the current batch
+  int pos_ = B;                    // next candidate of the current batch (B: none left)
+  std::uint32_t mask_ = 0;         // bit c: candidate c of the current batch is accepted
+  double tested_g_ = 0.0;          // the bound the mask was computed with
+  bool self_check_ = false;
+  std::uint64_t check_failures_ = 0;
   std::array<double, max_species> species_w_{};
 };
 

@@ -48,8 +48,8 @@ struct HardSpheres {
   /// Accept with probability |g| / G: (u G)^2 < |g|^2.
   static bool accept(double g2, double u, double bound) { return u * u * bound * bound < g2; }
   /// New relative velocity for relative velocity g with |g| = gnorm > 0.
-  template <int D>
-  static Vec<D> deflect(const Vec<D>& g, double gnorm, Rng& rng) {
+  template <int D, class G>
+  static Vec<D> deflect(const Vec<D>& g, double gnorm, G& rng) {
     return hard_sphere_deflection<D>(g, gnorm, rng);
   }
 };
@@ -60,8 +60,8 @@ struct MaxwellMolecules {
   static constexpr ModelKind kind = ModelKind::maxwell;
   static constexpr double exponent() { return 0.0; }
   static bool accept(double, double, double) { return true; }
-  template <int D>
-  static Vec<D> deflect(const Vec<D>&, double gnorm, Rng& rng) {
+  template <int D, class G>
+  static Vec<D> deflect(const Vec<D>&, double gnorm, G& rng) {
     return isotropic_deflection<D>(gnorm, rng);
   }
 };
@@ -80,8 +80,8 @@ class VariableHardSpheres {
   bool accept(double g2, double u, double bound) const {
     return u < std::pow(g2 / (bound * bound), half_a_);
   }
-  template <int D>
-  static Vec<D> deflect(const Vec<D>&, double gnorm, Rng& rng) {
+  template <int D, class G>
+  static Vec<D> deflect(const Vec<D>&, double gnorm, G& rng) {
     return isotropic_deflection<D>(gnorm, rng);
   }
 

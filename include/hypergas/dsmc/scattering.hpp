@@ -27,8 +27,8 @@ namespace hypergas::dsmc {
 
 /// Uniform unit vector on S^(D-1) by rejection methods without logarithms (Marsaglia 1972,
 /// "Choosing a point from the surface of a sphere", Ann. Math. Stat. 43, for D <= 4).
-template <int D>
-inline Vec<D> isotropic_direction(Rng& rng) {
+template <int D, class G>
+inline Vec<D> isotropic_direction(G& rng) {
   if constexpr (D == 1) {
     return Vec<D>::Constant((rng() >> 63) ? 1.0 : -1.0);
   } else if constexpr (D == 2) {
@@ -93,8 +93,8 @@ inline Vec<D> isotropic_direction(Rng& rng) {
 namespace detail {
 /// Maximum of k uniforms on [0, 1): a variable with CDF x^k (k = D - 1 gives the radius of
 /// a point uniform in the (D-1)-ball).
-template <int K>
-inline double max_of_uniforms(Rng& rng) {
+template <int K, class G>
+inline double max_of_uniforms(G& rng) {
   double m = rng.uniform_pos();
   for (int k = 1; k < K; ++k) m = std::max(m, rng.uniform_pos());
   return m;
@@ -102,15 +102,15 @@ inline double max_of_uniforms(Rng& rng) {
 }  // namespace detail
 
 /// Isotropic scattering: the new relative velocity |g| sigma, sigma uniform (any unit).
-template <int D>
-inline Vec<D> isotropic_deflection(double gnorm, Rng& rng) {
+template <int D, class G>
+inline Vec<D> isotropic_deflection(double gnorm, G& rng) {
   return gnorm * isotropic_direction<D>(rng);
 }
 
 /// Hard-sphere scattering: the new relative velocity g - 2 (g.n) n for the hard-sphere
 /// normal distribution around g (see the file comment). Precondition gnorm = |g| > 0.
-template <int D>
-inline Vec<D> hard_sphere_deflection(const Vec<D>& g, double gnorm, Rng& rng) {
+template <int D, class G>
+inline Vec<D> hard_sphere_deflection(const Vec<D>& g, double gnorm, G& rng) {
   if constexpr (D == 1) {
     (void)gnorm;
     (void)rng;

@@ -78,6 +78,10 @@
 #include "hypergas/particles.hpp"
 #include "hypergas/rng.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace hypergas::dsmc {
 
 /// The DSMC engine for dimension D, collision model `Model`, particle features F (Features{}
@@ -239,6 +243,27 @@ class Engine {
       return true;
     }
   }
+  /// Bit c set: candidate c of batch b involves particle i or j (SSE2 compares four
+  /// candidates at a time, which is every x86-64; a plain loop elsewhere).
+  static std::uint32_t sharing(const Batch& b, std::uint32_t i, std::uint32_t j) {
+#if defined(__SSE2__)
+    const __m128i si = _mm_set1_epi32(static_cast<int>(i)), sj = _mm_set1_epi32(static_cast<int>(j));
+    std::uint32_t m = 0;
+    for (int q = 0; q < B; q += 4) {
+      const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b.i.data() + q));
+      const __m128i e = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b.j.data() + q));
+      const __m128i hit = _mm_or_si128(_mm_or_si128(_mm_cmpeq_epi32(a, si), _mm_cmpeq_epi32(a, sj)),
+                                       _mm_or_si128(_mm_cmpeq_epi32(e, si), _mm_cmpeq_epi32(e, sj)));
+      m |= static_cast<std::uint32_t>(_mm_movemask_ps(_mm_castsi128_ps(hit))) << q;
+    }
+    return m;
+#else
+    std::uint32_t m = 0;
+    for (int c = 0; c < B; ++c)
+      m |= std::uint32_t((b.i[c] == i) | (b.i[c] == j) | (b.j[c] == i) | (b.j[c] == j)) << c;
+    return m;
+#endif
+  }
   /// Self-check: every pending mask bit must equal a fresh test with the state of now.
   void verify(double G) {
     for (int c = pos_; c < B; ++c) {
@@ -323,12 +348,11 @@ class Engine {
       apply_deflection<D>(p_, i, j, vi, vj, delta);
       ++collisions_;
       if constexpr (Model::needs_majorant) {
-        for (int c2 = pos_; c2 < B; ++c2) {
-          const std::uint32_t a = b.i[c2], e = b.j[c2];
-          if ((a == i) | (a == j) | (e == i) | (e == j)) [[unlikely]] {
-            const std::uint32_t bit = 1u << c2;
-            mask_ = test(b, c2, G) ? (mask_ | bit) : (mask_ & ~bit);
-          }
+        // later candidates of the batch that share particle i or j: decided again
+        for (std::uint32_t hit = sharing(b, i, j) >> pos_ << pos_; hit != 0; hit &= hit - 1) {
+          const int c2 = std::countr_zero(hit);
+          const std::uint32_t bit = 1u << c2;
+          mask_ = test(b, c2, G) ? (mask_ | bit) : (mask_ & ~bit);
         }
         const double s2 = std::max(vi.squaredNorm(), vj.squaredNorm());
         if (bound_.exceeded_by(s2)) {

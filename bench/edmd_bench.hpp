@@ -43,6 +43,7 @@ inline double cpu_seconds() {
 
 template <int D, class Queue>
 void edmd_case(const EdmdCase& c, std::ostream& out) {
+  const char* queue = c.heap ? "heap" : "calendar";
   std::vector<double> rates;
   for (int r = 0; r < c.repeats; ++r) {
     edmd::Config cfg;
@@ -68,7 +69,7 @@ void edmd_case(const EdmdCase& c, std::ostream& out) {
                   "\"packing\":%.6g,\"repeat\":%d,"
                   "\"collisions\":%llu,\"wall_s\":%.4f,\"cpu_s\":%.4f,\"collisions_per_s\":%.1f,"
                   "\"bytes_per_particle\":%.1f,\"cells_per_side\":%d,\"Z\":%.5f}",
-                  c.heap ? "heap" : "calendar", D, c.n, c.packing, r,
+                  queue, D, c.n, c.packing, r,
                   static_cast<unsigned long long>(c.collisions), wall, cpu,
                   rate, e.bytes_per_particle(), e.cells_per_side(), e.pressure_Z());
     out << buf << std::endl;
@@ -78,7 +79,7 @@ void edmd_case(const EdmdCase& c, std::ostream& out) {
   std::snprintf(buf, sizeof buf,
                 "{\"bench\":\"edmd\",\"stat\":\"median\",\"queue\":\"%s\",\"dim\":%d,"
                 "\"n\":%zu,\"packing\":%.6g,\"repeats\":%d,\"collisions_per_s\":%.1f}",
-                c.heap ? "heap" : "calendar", D, c.n, c.packing, c.repeats,
+                queue, D, c.n, c.packing, c.repeats,
                 rates[rates.size() / 2]);
   out << buf << std::endl;
 }

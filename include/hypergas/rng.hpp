@@ -24,6 +24,12 @@ constexpr std::uint64_t mix64(std::uint64_t z) {
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
   return z ^ (z >> 31);
 }
+/// Uniform double in [0, 1) from the top 53 bits of a random word.
+constexpr double unit_interval(std::uint64_t w) { return static_cast<double>(w >> 11) * 0x1.0p-53; }
+/// Uniform double in (0, 1] from the top 53 bits of a random word: safe for log().
+constexpr double unit_interval_pos(std::uint64_t w) {
+  return static_cast<double>((w >> 11) + 1) * 0x1.0p-53;
+}
 }  // namespace detail
 
 /// A random stream. Satisfies std::uniform_random_bit_generator.
@@ -46,9 +52,9 @@ class Rng {
   }
 
   /// Uniform double in [0, 1), 53 random bits.
-  double uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
+  double uniform() { return detail::unit_interval(engine_()); }
   /// Uniform double in (0, 1]: safe for log().
-  double uniform_pos() { return static_cast<double>((engine_() >> 11) + 1) * 0x1.0p-53; }
+  double uniform_pos() { return detail::unit_interval_pos(engine_()); }
 
   /// Uniform integer in [0, n), unbiased (Lemire 2019, "Fast random integer generation in
   /// an interval", ACM TOMACS 29:3). Precondition n > 0.
@@ -124,9 +130,9 @@ class FastRng {
     return r;
   }
   /// Uniform double in [0, 1), 53 random bits.
-  double uniform() { return static_cast<double>((*this)() >> 11) * 0x1.0p-53; }
+  double uniform() { return detail::unit_interval((*this)()); }
   /// Uniform double in (0, 1]: safe for log().
-  double uniform_pos() { return static_cast<double>(((*this)() >> 11) + 1) * 0x1.0p-53; }
+  double uniform_pos() { return detail::unit_interval_pos((*this)()); }
 
  private:
   static constexpr std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }

@@ -222,7 +222,7 @@ class Engine {
       j += (j >= i);
       b.i[c] = i;
       b.j[c] = j;
-      if constexpr (Model::needs_majorant) b.u[c] = static_cast<double>(g() >> 11) * 0x1.0p-53;
+      if constexpr (Model::needs_majorant) b.u[c] = g.uniform();
       __builtin_prefetch(v + std::size_t(i) * stride, 1);
       __builtin_prefetch(v + std::size_t(j) * stride, 1);
     }
@@ -247,13 +247,15 @@ class Engine {
   /// candidates at a time, which is every x86-64; a plain loop elsewhere).
   static std::uint32_t sharing(const Batch& b, std::uint32_t i, std::uint32_t j) {
 #if defined(__SSE2__)
-    const __m128i si = _mm_set1_epi32(static_cast<int>(i)), sj = _mm_set1_epi32(static_cast<int>(j));
+    const __m128i si = _mm_set1_epi32(static_cast<int>(i));
+    const __m128i sj = _mm_set1_epi32(static_cast<int>(j));
     std::uint32_t m = 0;
     for (int q = 0; q < B; q += 4) {
       const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b.i.data() + q));
       const __m128i e = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b.j.data() + q));
-      const __m128i hit = _mm_or_si128(_mm_or_si128(_mm_cmpeq_epi32(a, si), _mm_cmpeq_epi32(a, sj)),
-                                       _mm_or_si128(_mm_cmpeq_epi32(e, si), _mm_cmpeq_epi32(e, sj)));
+      const __m128i in_a = _mm_or_si128(_mm_cmpeq_epi32(a, si), _mm_cmpeq_epi32(a, sj));
+      const __m128i in_e = _mm_or_si128(_mm_cmpeq_epi32(e, si), _mm_cmpeq_epi32(e, sj));
+      const __m128i hit = _mm_or_si128(in_a, in_e);
       m |= static_cast<std::uint32_t>(_mm_movemask_ps(_mm_castsi128_ps(hit))) << q;
     }
     return m;

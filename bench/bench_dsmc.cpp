@@ -1,6 +1,6 @@
 // bench_dsmc: DSMC throughput, one JSON object per line (see dsmc_bench.hpp).
 // Usage: bench_dsmc [--dims 1,2,3] [--ns 10000,1000000] [--reps 3] [--min-collisions 5e6]
-//                   [--model hs|maxwell|vhs] [--threads 2]
+//                   [--model hs|maxwell|vhs] [--threads 2] [--clock wall|cpu]
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
@@ -27,8 +27,10 @@ int main(int argc, char** argv) {
       if (k == "-h" || k == "--help") {
         std::cout << "Usage: bench_dsmc [--dims 1,2,3] [--ns 10000,1000000] [--reps 3]\n"
                      "                  [--min-collisions 5e6] [--model hs|maxwell|vhs]"
-                     " [--threads 2]\n"
-                     "DSMC throughput, one JSON object per line (same as hypergas bench).\n";
+                     " [--threads 2] [--clock wall|cpu]\n"
+                     "DSMC throughput, one JSON object per line (same as hypergas bench).\n"
+                     "--clock cpu: rates per CPU second of the thread (for A/B runs on a\n"
+                     "shared machine; the default is wall seconds).\n";
         return 0;
       }
       if (i + 1 >= argc) throw hypergas::InvalidInput("option " + k + " needs a value");
@@ -43,7 +45,10 @@ int main(int argc, char** argv) {
         o.min_collisions = std::stod(v);
       else if (k == "--threads")
         o.threads = std::stoi(v);
-      else if (k == "--model")
+      else if (k == "--clock") {
+        if (v != "wall" && v != "cpu") throw hypergas::InvalidInput("--clock must be wall or cpu");
+        o.cpu_clock = v == "cpu";
+      } else if (k == "--model")
         o.model = hypergas::dsmc::parse_model(v);
       else
         throw hypergas::InvalidInput("unknown option " + k);

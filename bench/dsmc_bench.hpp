@@ -9,6 +9,8 @@
 // per line on `out`. The engine is sequential (one core); with `threads` > 1 a second line
 // per point reports the aggregate rate of that many independent replicas run concurrently
 // (dsmc/replicas.hpp), which is how the second core is used without changing statistics.
+// Rates are per wall second; with `cpu_clock`, per CPU second of the thread (bench_clock.hpp)
+// for paired A/B runs on a shared machine. The JSON says which ("clock").
 #pragma once
 
 #include <algorithm>
@@ -19,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_clock.hpp"
 #include "hypergas/dsmc/engine.hpp"
 #include "hypergas/dsmc/replicas.hpp"
 #include "hypergas/particles.hpp"
@@ -35,6 +38,7 @@ struct DsmcBenchOptions {
   dsmc::ModelKind model = dsmc::ModelKind::hs;
   std::uint64_t seed = 1;
   int threads = 1;  ///< > 1: also time that many independent replicas run concurrently
+  bool cpu_clock = false;  ///< rates per CPU second of the thread instead of per wall second
 };
 
 namespace detail {
@@ -51,7 +55,7 @@ inline double median(std::vector<double> x) {
 
 /// Random pair updates per second on n records of `Particles<D>::stride` doubles.
 template <int D>
-double pair_update_probe(std::size_t n, double updates, std::uint64_t seed) {
+double pair_update_probe(std::size_t n, double updates, std::uint64_t seed, bool cpu_clock) {
   Particles<D> p(n);
   double* v = p.velocity_data().data();
   constexpr int S = Particles<D>::stride;
@@ -68,7 +72,7 @@ double pair_update_probe(std::size_t n, double updates, std::uint64_t seed) {
   };
   for (int k = 0; k < ring; ++k) draw(k);
   const auto m = static_cast<std::uint64_t>(updates);
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch clock(cpu_clock);
   for (std::uint64_t c = 0; c < m; ++c) {
     const int k = static_cast<int>(c % ring);
     double* a = v + std::size_t(ri[k]) * S;
@@ -80,7 +84,7 @@ double pair_update_probe(std::size_t n, double updates, std::uint64_t seed) {
       b[d] = s + h;
     }
   }
-  const double w = seconds_since(t0);
+  const double w = clock.seconds();
   volatile double sink = v[0];
   (void)sink;
   return static_cast<double>(m) / w;
@@ -91,7 +95,7 @@ struct DsmcPoint {
 };
 
 template <int D, class Model>
-DsmcPoint time_engine(std::size_t n, double min_collisions, std::uint64_t seed) {
+DsmcPoint time_engine(std::size_t n, double min_collisions, std::uint64_t seed, bool cpu_clock) {
   dsmc::Config cfg;
   cfg.n = n;
   cfg.seed = seed;
@@ -101,23 +105,24 @@ DsmcPoint time_engine(std::size_t n, double min_collisions, std::uint64_t seed) 
   e.run_until(0.5);
   const auto c0 = e.collisions(), k0 = e.candidates();
   const double t_run = 2.0 * min_collisions / static_cast<double>(n);
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch clock(cpu_clock);
   e.run_until(e.time() + t_run);
-  const double w = seconds_since(t0);
+  const double w = clock.seconds();
   const double dc = static_cast<double>(e.collisions() - c0);
   const double dk = static_cast<double>(e.candidates() - k0);
   return {dc / w, dk / w, dc / dk, e.bytes_per_particle(), w};
 }
 
 template <int D>
-DsmcPoint time_model(dsmc::ModelKind m, std::size_t n, double min_coll, std::uint64_t seed) {
+DsmcPoint time_model(dsmc::ModelKind m, std::size_t n, double min_coll, std::uint64_t seed,
+                     bool cpu) {
   switch (m) {
     case dsmc::ModelKind::maxwell:
-      return time_engine<D, dsmc::MaxwellMolecules>(n, min_coll, seed);
+      return time_engine<D, dsmc::MaxwellMolecules>(n, min_coll, seed, cpu);
     case dsmc::ModelKind::vhs:
-      return time_engine<D, dsmc::VariableHardSpheres>(n, min_coll, seed);
+      return time_engine<D, dsmc::VariableHardSpheres>(n, min_coll, seed, cpu);
     default:
-      return time_engine<D, dsmc::HardSpheres>(n, min_coll, seed);
+      return time_engine<D, dsmc::HardSpheres>(n, min_coll, seed, cpu);
   }
 }
 
@@ -126,12 +131,13 @@ void bench_point(std::ostream& out, const DsmcBenchOptions& o, std::size_t n) {
   std::vector<double> rate, cand, acc, probe;
   double bytes = 0.0;
   for (int r = 0; r < o.reps; ++r) {
-    const DsmcPoint p = time_model<D>(o.model, n, o.min_collisions, o.seed + r);
+    const DsmcPoint p = time_model<D>(o.model, n, o.min_collisions, o.seed + r, o.cpu_clock);
     rate.push_back(p.collisions_per_s);
     cand.push_back(p.candidates_per_s);
     acc.push_back(p.acceptance);
     bytes = p.bytes_per_particle;
-    probe.push_back(pair_update_probe<D>(n, std::max(2e6, o.min_collisions), o.seed + r));
+    probe.push_back(
+        pair_update_probe<D>(n, std::max(2e6, o.min_collisions), o.seed + r, o.cpu_clock));
   }
   const double cr = median(rate), pr = median(probe);
   char buf[512];
@@ -139,9 +145,10 @@ void bench_point(std::ostream& out, const DsmcBenchOptions& o, std::size_t n) {
                 "{\"bench\":\"dsmc\",\"engine\":\"dsmc\",\"model\":\"%s\",\"dim\":%d,\"n\":%zu,"
                 "\"reps\":%d,\"collisions_per_s\":%.4g,\"candidates_per_s\":%.4g,"
                 "\"acceptance\":%.4f,\"bytes_per_particle\":%.1f,"
-                "\"probe_pair_updates_per_s\":%.4g,\"probe_ratio\":%.4f,\"threads\":1}",
+                "\"probe_pair_updates_per_s\":%.4g,\"probe_ratio\":%.4f,\"threads\":1,"
+                "\"clock\":\"%s\"}",
                 std::string(dsmc::to_string(o.model)).c_str(), D, n, o.reps, cr, median(cand),
-                median(acc), bytes, pr, cr / pr);
+                median(acc), bytes, pr, cr / pr, o.cpu_clock ? "cpu" : "wall");
   out << buf << '\n' << std::flush;
   if (o.threads > 1) {  // aggregate throughput of independent replicas, one per thread
     dsmc::Config cfg;

@@ -17,6 +17,7 @@
 #include <sstream>
 #include <vector>
 
+#include "bench_clock.hpp"
 #include "hypergas/edmd/engine.hpp"
 
 namespace hypergas::bench {
@@ -34,13 +35,6 @@ struct EdmdCase {
 };
 
 namespace detail {
-/// CPU seconds of this thread: the machine is shared, so wall time overstates the cost.
-inline double cpu_seconds() {
-  timespec ts;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
 template <int D, class Queue>
 void edmd_case(const EdmdCase& c, std::ostream& out) {
   const char* queue = c.heap ? "heap" : "calendar";

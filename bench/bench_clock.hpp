@@ -1,0 +1,36 @@
+// bench/bench_clock.hpp -- the clocks the benchmarks time with.
+//
+// The project's machines are shared: wall time includes time the thread waited for a core
+// (and, in a virtual machine, time the host gave to others). CPU seconds of the thread
+// exclude that waiting; they do not exclude slower memory while other tenants load it.
+#pragma once
+
+#include <chrono>
+#include <ctime>
+
+namespace hypergas::bench::detail {
+
+/// CPU seconds of this thread.
+inline double cpu_seconds() {
+  timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+/// Wall or thread-CPU seconds since construction.
+class Stopwatch {
+ public:
+  explicit Stopwatch(bool cpu = false)
+      : cpu_(cpu), wall0_(std::chrono::steady_clock::now()), cpu0_(cpu ? cpu_seconds() : 0.0) {}
+  double seconds() const {
+    if (cpu_) return cpu_seconds() - cpu0_;
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
+  }
+
+ private:
+  bool cpu_;
+  std::chrono::steady_clock::time_point wall0_;
+  double cpu0_;
+};
+
+}  // namespace hypergas::bench::detail

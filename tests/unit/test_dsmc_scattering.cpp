@@ -59,6 +59,31 @@ TEMPLATE_TEST_CASE_SIG("isotropic directions: unit, zero mean, covariance I/D", 
   }
 }
 
+TEMPLATE_TEST_CASE_SIG("isotropic directions: joint fourth moments of pairs of components",
+                       "[dsmc]", ((int D), D), 2, 3, 4, 5, 6) {
+  // The marginal tests below cannot see how the samplers join their parts (two disks in
+  // D = 4, a median and S^3 in D = 5, three planar pairs in D = 6). For sigma uniform on
+  // S^(D-1), E[sigma_k^2 sigma_l^2] = 1/(D(D+2)) for every k != l, and E[sigma_k^4
+  // sigma_l^4] = 9/(D(D+2)(D+4)(D+6)) gives the sample mean's sd. Every pair k < l is
+  // checked (at most 15) at |z| < 5: false failure < 1e-5 per D.
+  Rng rng(43, D);
+  Eigen::Matrix<double, D, D> m = Eigen::Matrix<double, D, D>::Zero();
+  for (int s = 0; s < n_samples; ++s) {
+    const Vec<D> u = isotropic_direction<D>(rng);
+    const Vec<D> u2 = u.cwiseProduct(u);
+    m += u2 * u2.transpose();
+  }
+  m /= n_samples;
+  const double expect = 1.0 / (D * (D + 2.0));
+  const double var = 9.0 / (D * (D + 2.0) * (D + 4.0) * (D + 6.0)) - expect * expect;
+  const double sd = std::sqrt(var / n_samples);
+  for (int k = 0; k < D; ++k)
+    for (int l = k + 1; l < D; ++l) {
+      INFO("D = " << D << ", components " << k << ", " << l << ": " << m(k, l));
+      REQUIRE(std::abs(m(k, l) - expect) < 5 * sd);
+    }
+}
+
 TEMPLATE_TEST_CASE_SIG("isotropic directions: component law Beta(1/2, (D-1)/2)", "[dsmc]",
                        ((int D), D), 2, 3, 4, 5, 6) {
   // For sigma uniform on S^(D-1), sigma_k^2 ~ Beta(1/2, (D-1)/2) for every k. The first and

@@ -25,8 +25,9 @@
 
 namespace hypergas::dsmc {
 
-/// Uniform unit vector on S^(D-1) by rejection methods without logarithms (Marsaglia 1972,
-/// "Choosing a point from the surface of a sphere", Ann. Math. Stat. 43, for D <= 4).
+/// Uniform unit vector on S^(D-1) without logarithms: Marsaglia's disk methods (1972,
+/// "Choosing a point from the surface of a sphere", Ann. Math. Stat. 43) for D <= 4, and
+/// for D = 5, 6 constructions on them without a rejection in the ball (see each branch).
 template <int D, class G>
 inline Vec<D> isotropic_direction(G& rng) {
   if constexpr (D == 1) {
@@ -63,30 +64,41 @@ inline Vec<D> isotropic_direction(G& rng) {
     Vec<D> v;
     v << x1, y1, x2 * f, y2 * f;
     return v;
-  } else {
-    // Archimedes' theorem generalised: for sigma uniform on S^(D-1), (sigma_1..sigma_(D-2))
-    // is uniform in the unit ball B^(D-2), and given it the last two components are uniform
-    // on the circle of radius sqrt(1 - |p|^2). The ball point comes from rejection in the
-    // cube (acceptance 52 % for B^3, 31 % for B^4), the circle from a point in the disk.
+  } else if constexpr (D == 5) {
+    // One coordinate of sigma uniform on S^4 has density proportional to 1 - z^2 on
+    // [-1, 1], the law of the median of three uniforms on [-1, 1] (density 6 x (1 - x) on
+    // [0, 1], mapped); given z the other four are sqrt(1 - z^2) times a uniform point of S^3
+    // (the D = 4 sampler). No rejection beyond the two disks of D = 4.
+    const double a = 2.0 * rng.uniform() - 1.0, b = 2.0 * rng.uniform() - 1.0,
+                 c = 2.0 * rng.uniform() - 1.0;
+    const double z = std::max(std::min(a, b), std::min(std::max(a, b), c));
+    const Vec<4> w = isotropic_direction<4>(rng);
+    const double f = std::sqrt(1.0 - z * z);
     Vec<D> v;
-    double pp;
-    do {
-      pp = 0.0;
-      for (int k = 0; k < D - 2; ++k) {
-        v[k] = 2.0 * rng.uniform() - 1.0;
-        pp += v[k] * v[k];
-      }
-    } while (pp >= 1.0);
-    double x, y, s;
-    do {
-      x = 2.0 * rng.uniform() - 1.0;
-      y = 2.0 * rng.uniform() - 1.0;
-      s = x * x + y * y;
-    } while (s >= 1.0 || s < 1e-200);
-    const double f = std::sqrt((1.0 - pp) / s);
-    v[D - 2] = x * f;
-    v[D - 1] = y * f;
+    v << w[0] * f, w[1] * f, w[2] * f, w[3] * f, z;
     return v;
+  } else if constexpr (D == 6) {
+    // sigma uniform on S^5 as three planar pairs: their squared lengths are uniform on the
+    // simplex (Dirichlet(1, 1, 1): the spacings of two sorted uniforms), their angles
+    // uniform and independent (a point in the unit disk, normalised).
+    const double u1 = rng.uniform(), u2 = rng.uniform();
+    const double lo = std::min(u1, u2), hi = std::max(u1, u2);
+    const double r2[3] = {lo, hi - lo, 1.0 - hi};
+    Vec<D> v;
+    for (int k = 0; k < 3; ++k) {
+      double x, y, s;
+      do {
+        x = 2.0 * rng.uniform() - 1.0;
+        y = 2.0 * rng.uniform() - 1.0;
+        s = x * x + y * y;
+      } while (s >= 1.0 || s < 1e-200);
+      const double f = std::sqrt(r2[k] / s);
+      v[2 * k] = x * f;
+      v[2 * k + 1] = y * f;
+    }
+    return v;
+  } else {
+    static_assert(D >= 1 && D <= 6, "directions are sampled for D = 1..6");
   }
 }
 

@@ -25,6 +25,29 @@
 
 namespace hypergas::dsmc {
 
+namespace detail {
+/// A point (x, y) uniform in the open unit disk, by rejection from the square (acceptance
+/// pi/4); returns s = x^2 + y^2. With NonZero the centre is rejected too, for callers that
+/// divide by s (s is 0 or at least 2^-104 for 53-bit uniforms).
+template <bool NonZero, class G>
+inline double disk_point(G& rng, double& x, double& y) {
+  for (;;) {
+    x = 2.0 * rng.uniform() - 1.0;
+    y = 2.0 * rng.uniform() - 1.0;
+    const double s = x * x + y * y;
+    if (s < 1.0 && (!NonZero || s != 0.0)) return s;
+  }
+}
+/// Maximum of k uniforms on [0, 1): a variable with CDF x^k (k = D - 1 gives the radius of
+/// a point uniform in the (D-1)-ball).
+template <int K, class G>
+inline double max_of_uniforms(G& rng) {
+  double m = rng.uniform_pos();
+  for (int k = 1; k < K; ++k) m = std::max(m, rng.uniform_pos());
+  return m;
+}
+}  // namespace detail
+
 /// Uniform unit vector on S^(D-1) without logarithms: Marsaglia's disk methods (1972,
 /// "Choosing a point from the surface of a sphere", Ann. Math. Stat. 43) for D <= 4, and
 /// for D = 5, 6 constructions on them without a rejection in the ball (see each branch).
@@ -34,32 +57,18 @@ inline Vec<D> isotropic_direction(G& rng) {
     return Vec<D>::Constant((rng() >> 63) ? 1.0 : -1.0);
   } else if constexpr (D == 2) {
     // (x, y) uniform in the unit disk; its doubled angle is uniform: (x^2-y^2, 2xy)/(x^2+y^2).
-    for (;;) {
-      const double x = 2.0 * rng.uniform() - 1.0, y = 2.0 * rng.uniform() - 1.0;
-      const double s = x * x + y * y;
-      if (s < 1.0 && s > 1e-200) return Vec<D>((x * x - y * y) / s, 2.0 * x * y / s);
-    }
+    double x, y;
+    const double s = detail::disk_point<true>(rng, x, y);
+    return Vec<D>((x * x - y * y) / s, 2.0 * x * y / s);
   } else if constexpr (D == 3) {
-    for (;;) {
-      const double x = 2.0 * rng.uniform() - 1.0, y = 2.0 * rng.uniform() - 1.0;
-      const double s = x * x + y * y;
-      if (s < 1.0) {
-        const double f = 2.0 * std::sqrt(1.0 - s);
-        return Vec<D>(x * f, y * f, 1.0 - 2.0 * s);
-      }
-    }
+    double x, y;
+    const double s = detail::disk_point<false>(rng, x, y);
+    const double f = 2.0 * std::sqrt(1.0 - s);
+    return Vec<D>(x * f, y * f, 1.0 - 2.0 * s);
   } else if constexpr (D == 4) {
-    double x1, y1, s1, x2, y2, s2;
-    do {
-      x1 = 2.0 * rng.uniform() - 1.0;
-      y1 = 2.0 * rng.uniform() - 1.0;
-      s1 = x1 * x1 + y1 * y1;
-    } while (s1 >= 1.0);
-    do {
-      x2 = 2.0 * rng.uniform() - 1.0;
-      y2 = 2.0 * rng.uniform() - 1.0;
-      s2 = x2 * x2 + y2 * y2;
-    } while (s2 >= 1.0 || s2 == 0.0);
+    double x1, y1, x2, y2;
+    const double s1 = detail::disk_point<false>(rng, x1, y1);
+    const double s2 = detail::disk_point<true>(rng, x2, y2);
     const double f = std::sqrt((1.0 - s1) / s2);
     Vec<D> v;
     v << x1, y1, x2 * f, y2 * f;
@@ -86,12 +95,8 @@ inline Vec<D> isotropic_direction(G& rng) {
     const double r2[3] = {lo, hi - lo, 1.0 - hi};
     Vec<D> v;
     for (int k = 0; k < 3; ++k) {
-      double x, y, s;
-      do {
-        x = 2.0 * rng.uniform() - 1.0;
-        y = 2.0 * rng.uniform() - 1.0;
-        s = x * x + y * y;
-      } while (s >= 1.0 || s < 1e-200);
+      double x, y;
+      const double s = detail::disk_point<true>(rng, x, y);
       const double f = std::sqrt(r2[k] / s);
       v[2 * k] = x * f;
       v[2 * k + 1] = y * f;
@@ -102,16 +107,6 @@ inline Vec<D> isotropic_direction(G& rng) {
   }
 }
 
-namespace detail {
-/// Maximum of k uniforms on [0, 1): a variable with CDF x^k (k = D - 1 gives the radius of
-/// a point uniform in the (D-1)-ball).
-template <int K, class G>
-inline double max_of_uniforms(G& rng) {
-  double m = rng.uniform_pos();
-  for (int k = 1; k < K; ++k) m = std::max(m, rng.uniform_pos());
-  return m;
-}
-}  // namespace detail
 
 /// Isotropic scattering: the new relative velocity |g| sigma, sigma uniform (any unit).
 template <int D, class G>

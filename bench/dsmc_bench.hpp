@@ -14,7 +14,6 @@
 #pragma once
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <ostream>
@@ -42,10 +41,6 @@ struct DsmcBenchOptions {
 };
 
 namespace detail {
-
-inline double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 inline double median(std::vector<double> x) {
   std::sort(x.begin(), x.end());
@@ -159,10 +154,10 @@ void bench_point(std::ostream& out, const DsmcBenchOptions& o, std::size_t n) {
     dsmc::run_replicas<dsmc::Engine<D, dsmc::HardSpheres>>(
         cfg, o.threads, o.threads, [&](int r, auto& e) {
           const auto c0 = e.collisions();
-          const auto t1 = std::chrono::steady_clock::now();
+          const Stopwatch clock(false);
           e.run_until(2.0 * o.min_collisions / static_cast<double>(n));
           coll[r] = static_cast<double>(e.collisions() - c0);
-          wall[r] = seconds_since(t1);
+          wall[r] = clock.seconds();
         });
     double total = 0.0;
     for (int r = 0; r < o.threads; ++r) total += coll[r] / wall[r];

@@ -10,8 +10,6 @@
 #pragma once
 
 #include <algorithm>
-#include <chrono>
-#include <ctime>
 #include <cstdio>
 #include <ostream>
 #include <sstream>
@@ -49,12 +47,10 @@ void edmd_case(const EdmdCase& c, std::ostream& out) {
     while (e.collisions() < warm) e.step();
     e.reset_observables();
     const std::uint64_t c0 = e.collisions();
-    const auto t0 = std::chrono::steady_clock::now();
-    const double cpu0 = cpu_seconds();
+    const Stopwatch wall_clock(false), cpu_clock(true);
     while (e.collisions() - c0 < c.collisions) e.step();
-    const double wall =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const double cpu = cpu_seconds() - cpu0;
+    const double wall = wall_clock.seconds();
+    const double cpu = cpu_clock.seconds();
     const double rate = static_cast<double>(c.collisions) / cpu;
     rates.push_back(rate);
     char buf[512];

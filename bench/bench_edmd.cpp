@@ -1,6 +1,7 @@
 // bench_edmd: EDMD collisions per second (one core) for the cases; JSON lines.
-// Usage: bench_edmd [dim n packing [collisions [repeats [calendar|heap]]]]
-// (no arguments: the default cases; the last argument picks the event queue).
+// Usage: bench_edmd [dim n packing [collisions [repeats [calendar|heap [auto|slab|horizon]]]]]
+// (no arguments: the default cases; the last two pick the event queue and the neighbour
+// scan, edmd/config.hpp).
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -10,8 +11,11 @@
 int main(int argc, char** argv) {
   using namespace hypergas::bench;
   const std::string queue = argc > 6 ? argv[6] : "calendar";
-  if (argc == 2 || argc == 3 || argc > 7 || (queue != "calendar" && queue != "heap")) {
-    std::cerr << "Usage: bench_edmd [dim n packing [collisions [repeats [calendar|heap]]]]\n"
+  const std::string scan = argc > 7 ? argv[7] : "auto";
+  if (argc == 2 || argc == 3 || argc > 8 || (queue != "calendar" && queue != "heap") ||
+      (scan != "auto" && scan != "slab" && scan != "horizon")) {
+    std::cerr << "Usage: bench_edmd [dim n packing [collisions [repeats [calendar|heap "
+                 "[auto|slab|horizon]]]]]\n"
                  "EDMD collisions per CPU second, one JSON object per line; no arguments:\n"
                  "3D N = 4000, 32000, 256000 at eta = 0.26 and 6D N = 32000 at eta = 0.05.\n";
     const std::string a = argc > 1 ? argv[1] : "";
@@ -26,6 +30,9 @@ int main(int argc, char** argv) {
       if (argc >= 5) c.collisions = static_cast<std::uint64_t>(std::atoll(argv[4]));
       if (argc >= 6) c.repeats = std::atoi(argv[5]);
       c.heap = queue == "heap";
+      c.scan = scan == "slab"      ? hypergas::edmd::Scan::slab
+               : scan == "horizon" ? hypergas::edmd::Scan::horizon
+                                   : hypergas::edmd::Scan::automatic;
       run_edmd_bench(c, std::cout);
       return 0;
     }

@@ -30,6 +30,7 @@ struct EdmdCase {
   double warmup = 2.0;  ///< collisions per particle before timing
   std::uint64_t seed = 1;
   bool heap = false;  ///< time the binary-heap event queue instead of the calendar queue
+  edmd::Scan scan = edmd::Scan::automatic;  ///< neighbour-cell choice (edmd/config.hpp)
 };
 
 namespace detail {
@@ -42,11 +43,13 @@ void edmd_case(const EdmdCase& c, std::ostream& out) {
     cfg.n = c.n;
     cfg.packing = c.packing;
     cfg.seed = c.seed + static_cast<std::uint64_t>(r);
+    cfg.scan = c.scan;
     edmd::Engine<D, Features{.positions = true}, Queue> e(cfg);
     const auto warm = static_cast<std::uint64_t>(c.warmup * static_cast<double>(c.n) / 2.0);
     while (e.collisions() < warm) e.step();
     e.reset_observables();
-    const std::uint64_t c0 = e.collisions();
+    const std::uint64_t c0 = e.collisions(), x0 = e.crossings(), s0 = e.stale_events(),
+                        p0 = e.pairs_tested();
     const Stopwatch wall_clock(false), cpu_clock(true);
     while (e.collisions() - c0 < c.collisions) e.step();
     const double wall = wall_clock.seconds();
@@ -55,13 +58,18 @@ void edmd_case(const EdmdCase& c, std::ostream& out) {
     rates.push_back(rate);
     char buf[512];
     std::snprintf(buf, sizeof buf,
-                  "{\"bench\":\"edmd\",\"queue\":\"%s\",\"dim\":%d,\"n\":%zu,"
+                  "{\"bench\":\"edmd\",\"queue\":\"%s\",\"scan\":\"%s\",\"dim\":%d,\"n\":%zu,"
                   "\"packing\":%.6g,\"repeat\":%d,"
                   "\"collisions\":%llu,\"wall_s\":%.4f,\"cpu_s\":%.4f,\"collisions_per_s\":%.1f,"
-                  "\"bytes_per_particle\":%.1f,\"cells_per_side\":%d,\"Z\":%.5f}",
-                  queue, D, c.n, c.packing, r,
+                  "\"bytes_per_particle\":%.1f,\"cells_per_side\":%d,\"Z\":%.5f,"
+                  "\"crossings_per_collision\":%.3f,\"stale_per_collision\":%.3f,"
+                  "\"pairs_per_collision\":%.1f}",
+                  queue, e.horizon_scan() ? "horizon" : "slab", D, c.n, c.packing, r,
                   static_cast<unsigned long long>(c.collisions), wall, cpu,
-                  rate, e.bytes_per_particle(), e.cells_per_side(), e.pressure_Z());
+                  rate, e.bytes_per_particle(), e.cells_per_side(), e.pressure_Z(),
+                  static_cast<double>(e.crossings() - x0) / static_cast<double>(c.collisions),
+                  static_cast<double>(e.stale_events() - s0) / static_cast<double>(c.collisions),
+                  static_cast<double>(e.pairs_tested() - p0) / static_cast<double>(c.collisions));
     out << buf << std::endl;
   }
   std::sort(rates.begin(), rates.end());

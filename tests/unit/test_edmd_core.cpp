@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
@@ -47,6 +48,44 @@ TEST_CASE("contact time is accurate for nearly touching and nearly grazing pairs
   }
   // Growing spheres (LS): r = 3, v = 0, s = 1 growing at a = 1: contact when 3 = 1 + t.
   REQUIRE(contact_time(0.0, 0.0, 9.0, 1.0, 1.0) == Approx(2.0).epsilon(1e-14));
+}
+
+TEST_CASE("batched contact times equal contact_time bit for bit", "[edmd]") {
+  // contact_times (the scans' branch-free, two-at-a-time form) must give exactly the
+  // scalar root: random pairs (approaching, receding, missing, overlapping), with and
+  // without growth (Lubachevsky-Stillinger) and per-pair contact distances, plus the edge
+  // cases (touching, exactly grazing, zero relative velocity, odd n for the scalar tail).
+  std::mt19937_64 gen(17);
+  std::uniform_real_distribution<double> u(-2.0, 2.0), pos(0.0, 3.0);
+  std::vector<double> rv, vv, rr, b;
+  for (int c = 0; c < 20001; ++c) {
+    const double r0 = u(gen), r1 = u(gen), v0 = u(gen), v1 = u(gen);
+    rv.push_back(r0 * v0 + r1 * v1), vv.push_back(v0 * v0 + v1 * v1);
+    rr.push_back(r0 * r0 + r1 * r1), b.push_back(pos(gen));
+  }
+  const double edge[][3] = {{-1.0, 1.0, 1.0}, {1.0, 1.0, 1.0},  {0.0, 0.0, 4.0},
+                            {-3.0, 1.0, 10.0}, {-0.0, 0.0, 1.0}, {-1.0, 0.0, 0.5}};
+  for (const auto& e : edge) rv.push_back(e[0]), vv.push_back(e[1]), rr.push_back(e[2]), b.push_back(1.0);
+  const std::size_t n = rv.size();
+  std::vector<double> t(n);
+  int finite = 0, instant = 0;
+  for (double rate : {0.0, 0.05}) {
+    for (bool per_pair : {false, true}) {
+      const double sc = 0.9;
+      contact_times(n, rv.data(), vv.data(), rr.data(), per_pair ? b.data() : nullptr, sc, rate,
+                    t.data());
+      for (std::size_t c = 0; c < n; ++c) {
+        const double bc = per_pair ? b[c] : 1.0;
+        const double ref = contact_time(rv[c], vv[c], rr[c], bc * sc, bc * rate);
+        INFO("pair " << c << ": rv " << rv[c] << ", vv " << vv[c] << ", rr " << rr[c]);
+        REQUIRE(std::memcmp(&t[c], &ref, sizeof ref) == 0);
+        finite += std::isfinite(ref) && ref > 0.0;
+        instant += ref == 0.0;
+      }
+    }
+  }
+  REQUIRE(finite > 1000);  // the sample holds every case
+  REQUIRE(instant > 100);
 }
 
 TEST_CASE("event queue returns times in order under updates", "[edmd]") {
@@ -249,4 +288,48 @@ TEMPLATE_TEST_CASE_SIG("renumbering particles by position leaves every trajector
   bool moved = false;  // the renumbering did move particles in memory
   for (std::size_t i = 0; i < cfg.n; ++i) moved = moved || sorted.original_id(i) != i;
   REQUIRE(moved);
+}
+
+TEMPLATE_TEST_CASE_SIG("horizon and slab scans give the same collisions", "[edmd]",
+                       ((int D), D), 2, 3, 4, 5, 6) {
+  // The horizon scan (Config::Scan) skips stencil cells that cannot hold a partner before
+  // the particle's next crossing; the slab scan skips nothing. Both must find every
+  // collision, so from the same start they run the same trajectory, apart from round-off
+  // (scans at different times compute a pair time from positions advanced differently):
+  // after one collision per particle that difference is ~1e-14, far below the 1e-8
+  // asserted, while one missed or spurious collision changes the count and moves particles
+  // by O(1). The first case is large enough for a real stencil (>= 4 cells per side);
+  // the second repeats a short run with the all-pairs overlap check after every event.
+  for (const bool check : {false, true}) {
+    Config cfg;
+    cfg.n = check ? 300 : (D == 6 ? 4000 : 2000);
+    // Lattice starts without Lubachevsky-Stillinger compression (in 6D, eta = 0.05 at
+    // N = 4000 needs one, whose own chaotic run would already separate the two starts).
+    cfg.packing = D == 6 ? (check ? 0.01 : 0.03) : 0.3 * jamming_packing(D);
+    cfg.seed = 21;
+    cfg.debug_overlap = check;
+    cfg.scan = Scan::slab;
+    Engine<D> slab(cfg);
+    cfg.scan = Scan::horizon;
+    Engine<D> horizon(cfg);
+    REQUIRE_FALSE(slab.horizon_scan());
+    REQUIRE(horizon.horizon_scan());
+    INFO("D = " << D << ", n = " << cfg.n << ", cells per side " << slab.cells_per_side());
+    REQUIRE(slab.cells_per_side() >= (check ? 3 : 4));
+    LastState a, b;
+    double tau = 0.0;
+    while (slab.collisions() < 2 * cfg.n) slab.run_until(tau += 0.05);  // ~4 per particle
+    slab.run_until(tau + 0.01, &a, 1.0);
+    horizon.run_until(tau);
+    horizon.run_until(tau + 0.01, &b, 1.0);
+    REQUIRE(slab.collisions() == horizon.collisions());
+    REQUIRE(a.x.size() == b.x.size());
+    double dmax = 0.0;
+    for (std::size_t k = 0; k < a.x.size(); ++k)
+      dmax = std::max(dmax, std::abs(a.x[k] - b.x[k]) + std::abs(a.v[k] - b.v[k]));
+    INFO("largest position + velocity difference " << dmax);
+    REQUIRE(dmax < 1e-8);
+    // the horizon scan did skip pairs
+    REQUIRE(horizon.pairs_tested() < slab.pairs_tested());
+  }
 }

@@ -25,8 +25,14 @@
 // counter) and one cell-crossing time; the earliest is its key in the event queue. A
 // pair event is valid only if the partner's counter is unchanged (lazy invalidation); when
 // the first is invalid the runner-up is used if still valid, else the particle is scanned
-// again. Crossing a cell keeps still-valid pair events and scans only the newly adjacent
-// slab of cells. An event costs O(neighbours) with the calendar queue (O(neighbours +
+// again. Which stencil cells a prediction scans (Config::Scan): in D >= 3 the horizon scan
+// (scan_horizon) skips every cell farther than a contact distance from the box bounding the
+// particle's path to its next crossing, and a crossing rescans; in D <= 2 the slab scan
+// takes the whole stencil and a crossing keeps still-valid pair events and scans only the
+// newly adjacent slab of cells. A scan's pair times are computed in a batch, two at a time
+// and without data-dependent branches (earliest_pairs, contact_times). Measured (3D,
+// eta = 0.26; 6D, eta = 0.05): horizon/slab 1.08-1.18x in 3D, 1.3-1.45x in 5D, 2x in 6D;
+// equal in 2D. An event costs O(neighbours) with the calendar queue (O(neighbours +
 // log N) with the heap; measured at 3D, eta = 0.26: equal speed at N <= 256000, the
 // calendar 1.05-1.3x the heap at N = 1e6 on a 32 MB L3, equal where the L3 holds it all).
 //
@@ -74,11 +80,16 @@ class Engine {
 
  public:
   using Store = Particles<D, F>;
+  /// Config::Scan::automatic uses the horizon scan from this dimension up (measured below).
+  static constexpr int auto_horizon_dim = 3;
 
   /// Places cfg.n particles on a lattice at packing cfg.packing, draws velocities in state
   /// cfg.init, compresses (Lubachevsky–Stillinger) if the lattice is too tight, and predicts
   /// all events. Throws InvalidInput for bad parameters or a box below 2 diameters.
-  explicit Engine(const Config& cfg) : debug_(cfg.debug_overlap) {
+  explicit Engine(const Config& cfg)
+      : debug_(cfg.debug_overlap),
+        horizon_(cfg.scan == Scan::horizon ||
+                 (cfg.scan == Scan::automatic && D >= auto_horizon_dim)) {
     if (cfg.n < 2) throw InvalidInput("EDMD needs at least 2 particles");
     if (cfg.n > 0xFFFFFFF0ull) throw InvalidInput("EDMD: too many particles");
     if constexpr (D >= 2) check_packing(D, cfg.packing);
@@ -192,6 +203,8 @@ class Engine {
   /// (the partner collided with someone else first) that only cost a re-prediction.
   std::uint64_t crossings() const { return ncross_; }
   std::uint64_t stale_events() const { return nstale_; }
+  /// Pair times computed by the scans since the start (the cost measure of the cell lists).
+  std::uint64_t pairs_tested() const { return npairs_; }
   std::size_t size() const { return p_.size(); }
   double box_side() const { return L_; }
   /// Packing fraction at the current diameters.
@@ -253,6 +266,8 @@ class Engine {
            cells_.bytes_per_particle(size()) + 0.0 * n;
   }
   int cells_per_side() const { return cells_.per_side(); }
+  /// Whether predictions use the horizon scan (Config::Scan) rather than slab scans.
+  bool horizon_scan() const { return horizon_; }
   /// Current diameter scale (1 after compression) and its growth rate (per unit time).
   double diameter_scale() const { return scale_ref_ + rate_ * (now_ - t_scale_); }
 
@@ -278,7 +293,7 @@ class Engine {
     scale_ref_ = diameter_scale();
     for (std::size_t i = 0; i < size(); ++i) p_.local_time(i) = 0.0;
     now_ = t_scale_ = 0.0;
-    ncoll_ = ncross_ = nstale_ = next_reorder_ = 0;
+    ncoll_ = ncross_ = nstale_ = npairs_ = next_reorder_ = 0;
     rebuild();
   }
   /// Turns the per-event all-pairs overlap check on or off; returns the previous setting.
@@ -426,6 +441,10 @@ class Engine {
       scan_small_box(i, sc);
       return;
     }
+    if (horizon_) {
+      scan_horizon(i, sc);
+      return;
+    }
     // Two passes: list the candidates and prefetch their records, then compute. A record
     // is one cache line in 3D, and outside the L2 cache a scan's ~13 records arrive
     // together instead of one miss after another.
@@ -450,11 +469,131 @@ class Engine {
         cand_.push_back({static_cast<std::uint32_t>(j), v.shift});
       }
     }
-    for (const Cand& c : cand_)
-      top.offer(pair_time(i, c.j, shifts_[c.shift], sc), static_cast<std::int32_t>(c.j));
-    store(i, top);
+    store(i, earliest_pairs(i, sc, top, [&](const Cand& c) { return shifts_[c.shift]; }));
     predict_crossing(i);
   }
+  /// Earliest two pair events of i (at now) with the candidates cand_, the periodic shift
+  /// of candidate c being shift_of(c). Three passes: the dot products of every pair
+  /// (straight-line code), their contact times without branches (contact_times), then the
+  /// two smallest. Same times as pair_time, bit for bit.
+  template <class ShiftOf>
+  Top2 earliest_pairs(std::uint32_t i, double sc, Top2 top, ShiftOf&& shift_of) {
+    const std::size_t n = cand_.size();
+    npairs_ += n;
+    if (dots_.size() < 4 * n) dots_.resize(4 * n);
+    double* rv = dots_.data();
+    double* vv = rv + n;
+    double* rr = vv + n;
+    double* tt = rr + n;
+    if constexpr (F.radii) bases_.resize(n);
+    const Vec<D> xi = p_.position(i), vi = p_.velocity(i);
+    for (std::size_t c = 0; c < n; ++c) {
+      const std::uint32_t j = cand_[c].j;
+      const Vec<D> r =
+          p_.position(j) + p_.velocity(j) * (now_ - p_.local_time(j)) + shift_of(cand_[c]) - xi;
+      const Vec<D> v = p_.velocity(j) - vi;
+      rv[c] = r.dot(v), vv[c] = v.squaredNorm(), rr[c] = r.squaredNorm();
+      if constexpr (F.radii) bases_[c] = base_contact(i, j);
+    }
+    contact_times(n, rv, vv, rr, F.radii ? bases_.data() : nullptr, sc, rate_, tt);
+    for (std::size_t c = 0; c < n; ++c)
+      if (tt[c] < top.t2) top.offer(tt[c], static_cast<std::int32_t>(cand_[c].j));
+    return top;
+  }
+
+  /// One stencil offset along one axis for scan_horizon: its part of the cell index, its
+  /// squared gap to the path's box, and its periodic shift code (2 bits: 1 = -L, 2 = +L).
+  struct AxisStep {
+    std::uint32_t idx;
+    std::uint32_t code;
+    double gap2;
+  };
+  using AxisSteps = std::array<std::array<AxisStep, 3>, D>;
+  /// Visits the stencil cells whose summed squared gaps stay within `bound`, axis D-1
+  /// down to 0: a partial sum above the bound skips the whole subtree of offsets.
+  template <int K, class Fn>
+  static void walk_stencil(const AxisSteps& st, const std::array<int, D>& nst, double bound,
+                           std::uint32_t idx, std::uint32_t code, double g2, Fn& f) {
+    for (int a = 0; a < nst[K]; ++a) {
+      const AxisStep& s = st[K][a];
+      const double g = g2 + s.gap2;
+      if (g > bound) continue;
+      if constexpr (K == 0) f(idx + s.idx, code | s.code);
+      else walk_stencil<K - 1>(st, nst, bound, idx + s.idx, code | s.code, g, f);
+    }
+  }
+
+  /// Horizon scan (Config::Scan::horizon; 3 or more cells per side). Until its next cell
+  /// crossing, H from now, i stays in the box B spanned by its path x_i + v_i t, t in [0, H].
+  /// A collision of i and j at t* is found by the scan of whichever of them predicted last
+  /// before t*: neither crosses a cell between that scan and t* (a crossing is an event, and
+  /// every event of a particle in this mode rescans it), so the scanner's position at t* is
+  /// in its B and the other particle is in the cell it occupied at the scan. A stencil cell
+  /// farther from B than the largest contact distance reachable by time H therefore holds
+  /// no partner to find now, and is skipped. The squared distance is summed axis by axis
+  /// (walk_stencil), so one far axis skips a whole slab of the stencil. A pair found
+  /// beyond H is still recorded (it is a correct prediction, only possibly not the first).
+  void scan_horizon(std::uint32_t i, double sc) {
+    predict_crossing(i);
+    const double H = ev_[i].t_cross - now_;
+    const auto h = cells_.coords(cells_.cell_of(i));
+    const int m = cells_.per_side();
+    const double w = cells_.width();
+    const Vec<D> x = p_.position(i);
+    const Vec<D> v = p_.velocity(i);
+    // Largest contact distance before the crossing, with a margin for round-off in the
+    // gaps (a touching cell is never skipped).
+    const double smax = max_base_ * (sc + (rate_ > 0.0 ? rate_ * H : 0.0)) * (1.0 + 1e-9) +
+                        1e-12 * L_;
+    const double bound = smax * smax;
+    AxisSteps st;
+    std::array<int, D> nst{};
+    std::uint32_t stride = 1;
+    for (int k = 0; k < D; ++k) {
+      const double ext = v[k] == 0.0 ? 0.0 : v[k] * H;  // H = never only if v = 0
+      const double lo = std::min(x[k], x[k] + ext), hi = std::max(x[k], x[k] + ext);
+      const double face_lo = h[k] * w;
+      const double face_hi = h[k] + 1 == m ? L_ : (h[k] + 1) * w;
+      const double gdown = std::max(lo - face_lo, 0.0), gup = std::max(face_hi - hi, 0.0);
+      int a = 0;
+      st[k][a++] = {static_cast<std::uint32_t>(h[k]) * stride, 0u, 0.0};
+      if (gdown * gdown <= bound) {
+        const bool wrap = h[k] == 0;
+        st[k][a++] = {static_cast<std::uint32_t>(wrap ? m - 1 : h[k] - 1) * stride,
+                      wrap ? 1u << (2 * k) : 0u, gdown * gdown};
+      }
+      if (gup * gup <= bound) {
+        const bool wrap = h[k] + 1 == m;
+        st[k][a++] = {static_cast<std::uint32_t>(wrap ? 0 : h[k] + 1) * stride,
+                      wrap ? 2u << (2 * k) : 0u, gup * gup};
+      }
+      nst[k] = a;
+      stride *= static_cast<std::uint32_t>(m);
+    }
+    visit_.clear();
+    auto add_cell = [&](std::uint32_t c, std::uint32_t code) {
+      cells_.prefetch(c);
+      visit_.push_back({c, code});
+    };
+    walk_stencil<D - 1>(st, nst, bound, 0u, 0u, 0.0, add_cell);
+    cand_.clear();
+    for (const Cand& c : visit_) {
+      for (std::int32_t j = cells_.head(c.j); j != Cells<D>::none; j = cells_.next(j)) {
+        if (static_cast<std::uint32_t>(j) == i) continue;
+        const double* rec = p_.position(static_cast<std::size_t>(j)).data();
+        __builtin_prefetch(rec);
+        if constexpr (Store::stride > 8) __builtin_prefetch(rec + 8);  // 4D-6D: 2 lines
+        cand_.push_back({static_cast<std::uint32_t>(j), c.shift});
+      }
+    }
+    const double shv[4] = {0.0, -L_, L_, 0.0};
+    store(i, earliest_pairs(i, sc, Top2{}, [&](const Cand& c) {
+            Vec<D> shift;
+            for (int k = 0; k < D; ++k) shift[k] = shv[(c.shift >> (2 * k)) & 3u];
+            return shift;
+          }));
+  }
+
   /// Records a scan's two earliest pair events (relative times) as i's pair events.
   void store(std::uint32_t i, const Top2& top) {
     Ev& e = ev_[i];
@@ -557,7 +696,7 @@ class Engine {
     cells_.remove(i);
     cells_.insert(i, cells_.index(c));
     Ev& e = ev_[i];
-    const bool keep = m >= 3 && e.partner >= 0 && cnt_[e.partner] == e.pcount;
+    const bool keep = !horizon_ && m >= 3 && e.partner >= 0 && cnt_[e.partner] == e.pcount;
     if (keep) {
       Top2 top{e.t_pair - now_, e.t_pair2 - now_, e.partner, e.partner2};
       if (top.p2 >= 0 && cnt_[top.p2] != e.pcount2) top.t2 = never, top.p2 = -1;
@@ -631,6 +770,7 @@ class Engine {
   std::vector<Cand> cand_;      // scratch of scan(): candidates
   std::vector<Cand> visit_;     // scratch of scan(): stencil cells (cell, shift)
   std::vector<Vec<D>> shifts_;  // scratch of scan(): periodic shift per visited cell
+  std::vector<double> dots_, bases_;  // scratch of earliest_pairs()
   std::vector<std::uint32_t> id_, slot_;  // original id of each slot, and its inverse
   std::uint64_t reorder_every_ = 0, next_reorder_ = 0;  // renumbering period (collisions)
   Queue q_;
@@ -638,9 +778,10 @@ class Engine {
   double L_ = 0.0, max_base_ = 1.0;
   double now_ = 0.0;
   double scale_ref_ = 1.0, t_scale_ = 0.0, rate_ = 0.0;
-  std::uint64_t ncoll_ = 0, coll_meas_ = 0, ncross_ = 0, nstale_ = 0;
+  std::uint64_t ncoll_ = 0, coll_meas_ = 0, ncross_ = 0, nstale_ = 0, npairs_ = 0;
   double t_meas_ = 0.0, virial_ = 0.0;
   bool debug_ = false;
+  bool horizon_ = false;  // Config::Scan::horizon in effect
 };
 
 }  // namespace hypergas::edmd

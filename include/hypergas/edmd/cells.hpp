@@ -53,7 +53,7 @@ class Cells {
     ncells_ = 1;
     for (int k = 0; k < D; ++k) ncells_ *= static_cast<std::size_t>(m_);
     head_.assign(ncells_, none);
-    next_.assign(n, none);
+    next_.assign(n + 1, none);
     prev_.assign(n, none);
     cell_.assign(n, 0);
     // Stencil offsets {-1,0,1}^D: the 3^D neighbour cells for m >= 3, or the single cell
@@ -122,20 +122,23 @@ class Cells {
   std::int32_t head(std::uint32_t c) const { return head_[c]; }
   /// Asks the processor to fetch cell c's list head (scans read many at once).
   void prefetch(std::uint32_t c) const { __builtin_prefetch(&head_[c]); }
-  std::int32_t next(std::uint32_t i) const { return next_[i]; }
+  /// The particle after i in its cell's list, or none; next(none) is none, so a scan may
+  /// read one link past the end of a list without a branch.
+  std::int32_t next(std::int32_t i) const { return next_[static_cast<std::size_t>(i + 1)]; }
 
   void insert(std::uint32_t i, std::uint32_t c) {
     cell_[i] = c;
     prev_[i] = none;
-    next_[i] = head_[c];
+    next_[i + 1] = head_[c];
     if (head_[c] != none) prev_[head_[c]] = static_cast<std::int32_t>(i);
     head_[c] = static_cast<std::int32_t>(i);
   }
   void remove(std::uint32_t i) {
     const std::uint32_t c = cell_[i];
-    if (prev_[i] != none) next_[prev_[i]] = next_[i];
-    else head_[c] = next_[i];
-    if (next_[i] != none) prev_[next_[i]] = prev_[i];
+    const std::int32_t nx = next_[i + 1];
+    if (prev_[i] != none) next_[static_cast<std::size_t>(prev_[i]) + 1] = nx;
+    else head_[c] = nx;
+    if (nx != none) prev_[nx] = prev_[i];
   }
 
   /// Calls f(cell, shift) for every stencil cell of home cell `h` (coordinates), where shift
@@ -173,7 +176,7 @@ class Cells {
   int m_ = 0;
   double L_ = 0.0, w_ = 0.0;
   std::size_t ncells_ = 0;
-  std::vector<std::int32_t> head_, next_, prev_;
+  std::vector<std::int32_t> head_, next_, prev_;  // next_[i + 1]: after i; next_[0] = none
   std::vector<std::uint32_t> cell_;
   std::vector<std::array<int, D>> offsets_;
 };

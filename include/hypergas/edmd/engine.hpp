@@ -449,7 +449,6 @@ class Engine {
     // is one cache line in 3D, and outside the L2 cache a scan's ~13 records arrive
     // together instead of one miss after another.
     const auto h = cells_.coords(cells_.cell_of(i));
-    cand_.clear();
     shifts_.clear();
     visit_.clear();
     cells_.for_each_neighbor(
@@ -460,25 +459,48 @@ class Engine {
           shifts_.push_back(shift);
         },
         axis, dir);
-    for (const Cand& v : visit_) {
-      for (std::int32_t j = cells_.head(v.j); j != Cells<D>::none; j = cells_.next(j)) {
-        if (static_cast<std::uint32_t>(j) == i) continue;
-        const double* rec = p_.position(static_cast<std::size_t>(j)).data();
-        __builtin_prefetch(rec);
-        if constexpr (Store::stride > 8) __builtin_prefetch(rec + 8);  // 4D-6D: 2 lines
-        cand_.push_back({static_cast<std::uint32_t>(j), v.shift});
-      }
-    }
+    gather(i);
     store(i, earliest_pairs(i, sc, top, [&](const Cand& c) { return shifts_[c.shift]; }));
     predict_crossing(i);
   }
-  /// Earliest two pair events of i (at now) with the candidates cand_, the periodic shift
+  /// Lists the particles of the cells in visit_, except i, as the candidates
+  /// cand_[0, ncand_), and prefetches their records. Cells hold 0.5-0.7 particles on
+  /// average at the benchmark densities, so a loop per cell would mispredict its exit about
+  /// every other cell: the first member is written without a branch (an empty cell's
+  /// `none` is written and not counted), and only second and later members loop.
+  void gather(std::uint32_t i) {
+    if (cand_.size() < visit_.size() + 1) cand_.resize(2 * visit_.size() + 64);
+    std::size_t n = 0;
+    const auto me = static_cast<std::int32_t>(i);
+    auto fetch = [&](std::int32_t j) {
+      const double* rec = p_.position(static_cast<std::size_t>(j < 0 ? 0 : j)).data();
+      __builtin_prefetch(rec);
+      if constexpr (Store::stride > 8) __builtin_prefetch(rec + 8);  // 4D-6D: 2 lines
+    };
+    for (std::size_t v = 0; v < visit_.size(); ++v) {
+      const Cand& c = visit_[v];
+      std::int32_t j = cells_.head(c.j);
+      fetch(j);
+      cand_[n] = {static_cast<std::uint32_t>(j), c.shift};
+      n += static_cast<std::size_t>((j != Cells<D>::none) & (j != me));
+      for (j = cells_.next(j); j != Cells<D>::none; j = cells_.next(j)) {
+        // room for this member and the first members of the cells still to come
+        if (cand_.size() < n + visit_.size() - v + 1) cand_.resize(2 * cand_.size());
+        fetch(j);
+        cand_[n] = {static_cast<std::uint32_t>(j), c.shift};
+        n += static_cast<std::size_t>(j != me);
+      }
+    }
+    ncand_ = n;
+  }
+
+  /// Earliest two pair events of i (at now) with the candidates cand_[0, ncand_), the periodic shift
   /// of candidate c being shift_of(c). Three passes: the dot products of every pair
   /// (straight-line code), their contact times without branches (contact_times), then the
   /// two smallest. Same times as pair_time, bit for bit.
   template <class ShiftOf>
   Top2 earliest_pairs(std::uint32_t i, double sc, Top2 top, ShiftOf&& shift_of) {
-    const std::size_t n = cand_.size();
+    const std::size_t n = ncand_;
     npairs_ += n;
     if (dots_.size() < 4 * n) dots_.resize(4 * n);
     double* rv = dots_.data();
@@ -576,16 +598,7 @@ class Engine {
       visit_.push_back({c, code});
     };
     walk_stencil<D - 1>(st, nst, bound, 0u, 0u, 0.0, add_cell);
-    cand_.clear();
-    for (const Cand& c : visit_) {
-      for (std::int32_t j = cells_.head(c.j); j != Cells<D>::none; j = cells_.next(j)) {
-        if (static_cast<std::uint32_t>(j) == i) continue;
-        const double* rec = p_.position(static_cast<std::size_t>(j)).data();
-        __builtin_prefetch(rec);
-        if constexpr (Store::stride > 8) __builtin_prefetch(rec + 8);  // 4D-6D: 2 lines
-        cand_.push_back({static_cast<std::uint32_t>(j), c.shift});
-      }
-    }
+    gather(i);
     const double shv[4] = {0.0, -L_, L_, 0.0};
     store(i, earliest_pairs(i, sc, Top2{}, [&](const Cand& c) {
             Vec<D> shift;
@@ -767,7 +780,8 @@ class Engine {
   struct Cand {
     std::uint32_t j, shift;  // neighbour, index into shifts_
   };
-  std::vector<Cand> cand_;      // scratch of scan(): candidates
+  std::vector<Cand> cand_;      // scratch of scan(): candidates [0, ncand_)
+  std::size_t ncand_ = 0;
   std::vector<Cand> visit_;     // scratch of scan(): stencil cells (cell, shift)
   std::vector<Vec<D>> shifts_;  // scratch of scan(): periodic shift per visited cell
   std::vector<double> dots_, bases_;  // scratch of earliest_pairs()

@@ -76,6 +76,10 @@ class Cells {
 
   int per_side() const { return m_; }
   double width() const { return w_; }
+  /// Lower and upper face, along one axis, of the cells with coordinate c (the top cells'
+  /// upper face is the box side L itself, not m w, which may differ by round-off).
+  double face_lo(int c) const { return c * w_; }
+  double face_hi(int c) const { return c + 1 == m_ ? L_ : (c + 1) * w_; }
   std::size_t count() const { return ncells_; }
 
   /// Cell coordinate along one axis of position coordinate x in [0, L] (clamped).

@@ -8,8 +8,6 @@
 
 namespace hypergas::edmd {
 
-/// Parameters of an EDMD run. Units: sigma (diameter of species 0) = 1, m (mass of species
-/// 0) = 1, kT = init_params.kT (default 1); time in sigma sqrt(m/kT).
 /// How a particle's prediction chooses the neighbour cells it scans (grids of 3 or more cells
 /// per side; Engine::scan). `slab`: the whole 3^D stencil, and a cell crossing keeps the
 /// still-valid pair events and scans only the newly adjacent slab of 3^(D-1) cells.
@@ -19,6 +17,8 @@ namespace hypergas::edmd {
 /// one for D (engine.hpp). Both find every collision; trajectories agree to round-off.
 enum class Scan { automatic, slab, horizon };
 
+/// Parameters of an EDMD run. Units: sigma (diameter of species 0) = 1, m (mass of species
+/// 0) = 1, kT = init_params.kT (default 1); time in sigma sqrt(m/kT).
 struct Config {
   std::size_t n = 1000;       ///< number of particles (>= 2)
   double packing = 0.1;       ///< target packing fraction eta = sum_i v_D(sigma_i/2) / L^D

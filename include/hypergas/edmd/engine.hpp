@@ -31,8 +31,8 @@
 // takes the whole stencil and a crossing keeps still-valid pair events and scans only the
 // newly adjacent slab of cells. A scan's pair times are computed in a batch, two at a time
 // and without data-dependent branches (earliest_pairs, contact_times). Measured (3D,
-// eta = 0.26; 6D, eta = 0.05): horizon/slab 1.08-1.18x in 3D, 1.3-1.45x in 5D, 2x in 6D;
-// equal in 2D. An event costs O(neighbours) with the calendar queue (O(neighbours +
+// eta = 0.26; 6D, eta = 0.05): horizon/slab 1.08-1.18x in 3D, 1.26-1.46x in 5D, and in
+// 6D 642 instead of ~1130 pair times per collision; equal in 2D. An event costs O(neighbours) with the calendar queue (O(neighbours +
 // log N) with the heap; measured at 3D, eta = 0.26: equal speed at N <= 256000, the
 // calendar 1.05-1.3x the heap at N = 1e6 on a 32 MB L3, equal where the L3 holds it all).
 //
@@ -404,7 +404,6 @@ class Engine {
   /// Time of the next crossing of i out of its cell (i is at the current time).
   void predict_crossing(std::uint32_t i) {
     const auto c = cells_.coords(cells_.cell_of(i));
-    const double w = cells_.width();
     const auto x = p_.position(i);
     const auto v = p_.velocity(i);
     double best = never;
@@ -412,11 +411,10 @@ class Engine {
     for (int k = 0; k < D; ++k) {
       double t = never;
       if (v[k] > 0.0) {
-        const double hi = (c[k] + 1 == cells_.per_side()) ? L_ : (c[k] + 1) * w;
-        t = (hi - x[k]) / v[k];
+        t = (cells_.face_hi(c[k]) - x[k]) / v[k];
         if (t < best) best = t, code = 2 * k + 1;
       } else if (v[k] < 0.0) {
-        t = (c[k] * w - x[k]) / v[k];
+        t = (cells_.face_lo(c[k]) - x[k]) / v[k];
         if (t < best) best = t, code = 2 * k;
       }
     }
@@ -449,18 +447,19 @@ class Engine {
     // is one cache line in 3D, and outside the L2 cache a scan's ~13 records arrive
     // together instead of one miss after another.
     const auto h = cells_.coords(cells_.cell_of(i));
-    shifts_.clear();
     visit_.clear();
     cells_.for_each_neighbor(
         h,
         [&](std::uint32_t c, const Vec<D>& shift) {
           cells_.prefetch(c);
-          visit_.push_back({c, static_cast<std::uint32_t>(shifts_.size())});
-          shifts_.push_back(shift);
+          std::uint32_t code = 0;  // the 2-bit shift codes of scan_horizon
+          for (int k = 0; k < D; ++k)
+            code |= (shift[k] < 0.0 ? 1u : shift[k] > 0.0 ? 2u : 0u) << (2 * k);
+          visit_.push_back({c, code});
         },
         axis, dir);
     gather(i);
-    store(i, earliest_pairs(i, sc, top, [&](const Cand& c) { return shifts_[c.shift]; }));
+    store(i, earliest_pairs(i, sc, top));
     predict_crossing(i);
   }
   /// Lists the particles of the cells in visit_, except i, as the candidates
@@ -494,12 +493,11 @@ class Engine {
     ncand_ = n;
   }
 
-  /// Earliest two pair events of i (at now) with the candidates cand_[0, ncand_), the periodic shift
-  /// of candidate c being shift_of(c). Three passes: the dot products of every pair
-  /// (straight-line code), their contact times without branches (contact_times), then the
-  /// two smallest. Same times as pair_time, bit for bit.
-  template <class ShiftOf>
-  Top2 earliest_pairs(std::uint32_t i, double sc, Top2 top, ShiftOf&& shift_of) {
+  /// Earliest two pair events of i (at now) with the candidates cand_[0, ncand_), offered
+  /// to `top`. Three passes: the dot products of every pair (straight-line code), their
+  /// contact times without branches (contact_times), then the two smallest. Same times as
+  /// pair_time, bit for bit.
+  Top2 earliest_pairs(std::uint32_t i, double sc, Top2 top) {
     const std::size_t n = ncand_;
     npairs_ += n;
     if (dots_.size() < 4 * n) dots_.resize(4 * n);
@@ -509,10 +507,13 @@ class Engine {
     double* tt = rr + n;
     if constexpr (F.radii) bases_.resize(n);
     const Vec<D> xi = p_.position(i), vi = p_.velocity(i);
+    const double shv[4] = {0.0, -L_, L_, 0.0};
     for (std::size_t c = 0; c < n; ++c) {
       const std::uint32_t j = cand_[c].j;
+      Vec<D> shift;
+      for (int k = 0; k < D; ++k) shift[k] = shv[(cand_[c].shift >> (2 * k)) & 3u];
       const Vec<D> r =
-          p_.position(j) + p_.velocity(j) * (now_ - p_.local_time(j)) + shift_of(cand_[c]) - xi;
+          p_.position(j) + p_.velocity(j) * (now_ - p_.local_time(j)) + shift - xi;
       const Vec<D> v = p_.velocity(j) - vi;
       rv[c] = r.dot(v), vv[c] = v.squaredNorm(), rr[c] = r.squaredNorm();
       if constexpr (F.radii) bases_[c] = base_contact(i, j);
@@ -560,7 +561,6 @@ class Engine {
     const double H = ev_[i].t_cross - now_;
     const auto h = cells_.coords(cells_.cell_of(i));
     const int m = cells_.per_side();
-    const double w = cells_.width();
     const Vec<D> x = p_.position(i);
     const Vec<D> v = p_.velocity(i);
     // Largest contact distance before the crossing, with a margin for round-off in the
@@ -574,9 +574,8 @@ class Engine {
     for (int k = 0; k < D; ++k) {
       const double ext = v[k] == 0.0 ? 0.0 : v[k] * H;  // H = never only if v = 0
       const double lo = std::min(x[k], x[k] + ext), hi = std::max(x[k], x[k] + ext);
-      const double face_lo = h[k] * w;
-      const double face_hi = h[k] + 1 == m ? L_ : (h[k] + 1) * w;
-      const double gdown = std::max(lo - face_lo, 0.0), gup = std::max(face_hi - hi, 0.0);
+      const double gdown = std::max(lo - cells_.face_lo(h[k]), 0.0);
+      const double gup = std::max(cells_.face_hi(h[k]) - hi, 0.0);
       int a = 0;
       st[k][a++] = {static_cast<std::uint32_t>(h[k]) * stride, 0u, 0.0};
       if (gdown * gdown <= bound) {
@@ -599,12 +598,7 @@ class Engine {
     };
     walk_stencil<D - 1>(st, nst, bound, 0u, 0u, 0.0, add_cell);
     gather(i);
-    const double shv[4] = {0.0, -L_, L_, 0.0};
-    store(i, earliest_pairs(i, sc, Top2{}, [&](const Cand& c) {
-            Vec<D> shift;
-            for (int k = 0; k < D; ++k) shift[k] = shv[(c.shift >> (2 * k)) & 3u];
-            return shift;
-          }));
+    store(i, earliest_pairs(i, sc, Top2{}));
   }
 
   /// Records a scan's two earliest pair events (relative times) as i's pair events.
@@ -778,12 +772,12 @@ class Engine {
   std::vector<std::uint32_t> cnt_;    // per-particle collision counters
   std::vector<Ev> ev_;
   struct Cand {
-    std::uint32_t j, shift;  // neighbour, index into shifts_
+    std::uint32_t j, shift;  // particle (or cell), periodic shift code: 2 bits per axis,
+                             // 0 none, 1 = -L, 2 = +L (AxisStep)
   };
   std::vector<Cand> cand_;      // scratch of scan(): candidates [0, ncand_)
   std::size_t ncand_ = 0;
   std::vector<Cand> visit_;     // scratch of scan(): stencil cells (cell, shift)
-  std::vector<Vec<D>> shifts_;  // scratch of scan(): periodic shift per visited cell
   std::vector<double> dots_, bases_;  // scratch of earliest_pairs()
   std::vector<std::uint32_t> id_, slot_;  // original id of each slot, and its inverse
   std::uint64_t reorder_every_ = 0, next_reorder_ = 0;  // renumbering period (collisions)

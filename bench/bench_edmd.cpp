@@ -1,5 +1,5 @@
 // bench_edmd: EDMD collisions per second (one core) for the cases; JSON lines.
-// Usage: bench_edmd [dim n packing [collisions [repeats [calendar|heap [auto|slab|horizon]]]]]
+// Usage: bench_edmd [dim n packing [collisions [repeats [calendar|heap [auto|slab|horizon|filtered]]]]]
 // (no arguments: the default cases; the last two pick the event queue and the neighbour
 // scan, edmd/config.hpp).
 #include <cstdlib>
@@ -13,9 +13,9 @@ int main(int argc, char** argv) {
   const std::string queue = argc > 6 ? argv[6] : "calendar";
   const std::string scan = argc > 7 ? argv[7] : "auto";
   if (argc == 2 || argc == 3 || argc > 8 || (queue != "calendar" && queue != "heap") ||
-      (scan != "auto" && scan != "slab" && scan != "horizon")) {
+      (scan != "auto" && scan != "slab" && scan != "horizon" && scan != "filtered")) {
     std::cerr << "Usage: bench_edmd [dim n packing [collisions [repeats [calendar|heap "
-                 "[auto|slab|horizon]]]]]\n"
+                 "[auto|slab|horizon|filtered]]]]]\n"
                  "EDMD collisions per CPU second, one JSON object per line; no arguments:\n"
                  "3D N = 4000, 32000, 256000 at eta = 0.26 and 6D N = 32000 at eta = 0.05.\n";
     const std::string a = argc > 1 ? argv[1] : "";
@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
       c.heap = queue == "heap";
       c.scan = scan == "slab"      ? hypergas::edmd::Scan::slab
                : scan == "horizon" ? hypergas::edmd::Scan::horizon
+               : scan == "filtered" ? hypergas::edmd::Scan::filtered
                                    : hypergas::edmd::Scan::automatic;
       run_edmd_bench(c, std::cout);
       return 0;

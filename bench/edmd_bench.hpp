@@ -49,27 +49,28 @@ void edmd_case(const EdmdCase& c, std::ostream& out) {
     while (e.collisions() < warm) e.step();
     e.reset_observables();
     const std::uint64_t c0 = e.collisions(), x0 = e.crossings(), s0 = e.stale_events(),
-                        p0 = e.pairs_tested();
+                        p0 = e.pairs_tested(), n0 = e.scans();
     const Stopwatch wall_clock(false), cpu_clock(true);
     while (e.collisions() - c0 < c.collisions) e.step();
     const double wall = wall_clock.seconds();
     const double cpu = cpu_clock.seconds();
     const double rate = static_cast<double>(c.collisions) / cpu;
     rates.push_back(rate);
-    char buf[512];
+    char buf[640];
     std::snprintf(buf, sizeof buf,
                   "{\"bench\":\"edmd\",\"queue\":\"%s\",\"scan\":\"%s\",\"dim\":%d,\"n\":%zu,"
                   "\"packing\":%.6g,\"repeat\":%d,"
                   "\"collisions\":%llu,\"wall_s\":%.4f,\"cpu_s\":%.4f,\"collisions_per_s\":%.1f,"
                   "\"bytes_per_particle\":%.1f,\"cells_per_side\":%d,\"Z\":%.5f,"
                   "\"crossings_per_collision\":%.3f,\"stale_per_collision\":%.3f,"
-                  "\"pairs_per_collision\":%.1f}",
-                  queue, e.horizon_scan() ? "horizon" : "slab", D, c.n, c.packing, r,
+                  "\"pairs_per_collision\":%.1f,\"scans_per_collision\":%.3f}",
+                  queue, e.path_filter() ? "filtered" : e.horizon_scan() ? "horizon" : "slab", D, c.n, c.packing, r,
                   static_cast<unsigned long long>(c.collisions), wall, cpu,
                   rate, e.bytes_per_particle(), e.cells_per_side(), e.pressure_Z(),
                   static_cast<double>(e.crossings() - x0) / static_cast<double>(c.collisions),
                   static_cast<double>(e.stale_events() - s0) / static_cast<double>(c.collisions),
-                  static_cast<double>(e.pairs_tested() - p0) / static_cast<double>(c.collisions));
+                  static_cast<double>(e.pairs_tested() - p0) / static_cast<double>(c.collisions),
+                  static_cast<double>(e.scans() - n0) / static_cast<double>(c.collisions));
     out << buf << std::endl;
   }
   std::sort(rates.begin(), rates.end());

@@ -290,19 +290,20 @@ TEMPLATE_TEST_CASE_SIG("renumbering particles by position leaves every trajector
   REQUIRE(moved);
 }
 
-TEMPLATE_TEST_CASE_SIG("horizon and slab scans give the same collisions", "[edmd]",
+TEMPLATE_TEST_CASE_SIG("horizon, filtered and slab scans give the same collisions", "[edmd]",
                        ((int D), D), 2, 3, 4, 5, 6) {
   // The horizon scan (Config::Scan) skips stencil cells that cannot hold a partner before
-  // the particle's next crossing; the slab scan skips nothing. Both must find every
-  // collision, so from the same start they run the same trajectory, apart from round-off
-  // (scans at different times compute a pair time from positions advanced differently):
-  // after one collision per particle that difference is ~1e-14, far below the 1e-8
-  // asserted, while one missed or spurious collision changes the count and moves particles
-  // by O(1). The first case is large enough for a real stencil (>= 4 cells per side);
+  // the particle's next crossing, the filtered scan also skips particles whose path boxes
+  // are too far; the slab scan skips nothing. All must find every collision, so from the
+  // same start they run the same trajectory, apart from round-off (scans at different
+  // times compute a pair time from positions advanced differently): after one collision
+  // per particle that difference is ~1e-14, far below the 1e-8 asserted, while one missed
+  // or spurious collision changes the count and moves particles by O(1). The first case is
+  // large enough for a real stencil (>= 5 cells per side, where the path-box filter works);
   // the second repeats a short run with the all-pairs overlap check after every event.
   for (const bool check : {false, true}) {
     Config cfg;
-    cfg.n = check ? 300 : (D == 6 ? 4000 : 2000);
+    cfg.n = check ? 300 : (D == 6 ? 8000 : 2000);
     // Lattice starts without Lubachevsky-Stillinger compression (in 6D, eta = 0.05 at
     // N = 4000 needs one, whose own chaotic run would already separate the two starts).
     cfg.packing = D == 6 ? (check ? 0.01 : 0.03) : 0.3 * jamming_packing(D);
@@ -312,24 +313,38 @@ TEMPLATE_TEST_CASE_SIG("horizon and slab scans give the same collisions", "[edmd
     Engine<D> slab(cfg);
     cfg.scan = Scan::horizon;
     Engine<D> horizon(cfg);
+    cfg.scan = Scan::filtered;
+    Engine<D> filtered(cfg);
     REQUIRE_FALSE(slab.horizon_scan());
     REQUIRE(horizon.horizon_scan());
+    REQUIRE((filtered.horizon_scan() && filtered.path_filter()));
     INFO("D = " << D << ", n = " << cfg.n << ", cells per side " << slab.cells_per_side());
-    REQUIRE(slab.cells_per_side() >= (check ? 3 : 4));
-    LastState a, b;
+    REQUIRE(slab.cells_per_side() >= (check ? 3 : 5));
+    LastState a, b, c;
     double tau = 0.0;
     while (slab.collisions() < 2 * cfg.n) slab.run_until(tau += 0.05);  // ~4 per particle
     slab.run_until(tau + 0.01, &a, 1.0);
     horizon.run_until(tau);
     horizon.run_until(tau + 0.01, &b, 1.0);
+    filtered.run_until(tau);
+    filtered.run_until(tau + 0.01, &c, 1.0);
     REQUIRE(slab.collisions() == horizon.collisions());
+    REQUIRE(slab.collisions() == filtered.collisions());
     REQUIRE(a.x.size() == b.x.size());
+    REQUIRE(a.x.size() == c.x.size());
     double dmax = 0.0;
     for (std::size_t k = 0; k < a.x.size(); ++k)
-      dmax = std::max(dmax, std::abs(a.x[k] - b.x[k]) + std::abs(a.v[k] - b.v[k]));
+      dmax = std::max({dmax, std::abs(a.x[k] - b.x[k]) + std::abs(a.v[k] - b.v[k]),
+                       std::abs(a.x[k] - c.x[k]) + std::abs(a.v[k] - c.v[k])});
     INFO("largest position + velocity difference " << dmax);
     REQUIRE(dmax < 1e-8);
-    // the horizon scan did skip pairs
+    // the horizon scan did skip pairs, and the filter skipped more where it works (>= 5
+    // cells per side): 0.63 of the horizon scan's pairs in 2D, 0.3 or less in D >= 4
     REQUIRE(horizon.pairs_tested() < slab.pairs_tested());
+    if (filtered.cells_per_side() >= 5) {
+      INFO("pairs tested: horizon " << horizon.pairs_tested() << ", filtered "
+                                    << filtered.pairs_tested());
+      REQUIRE(filtered.pairs_tested() < (D >= 4 ? 0.5 : 1.0) * horizon.pairs_tested());
+    }
   }
 }

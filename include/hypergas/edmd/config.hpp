@@ -14,8 +14,11 @@ namespace hypergas::edmd {
 /// `horizon`: every prediction (crossings included) scans only the stencil cells within a
 /// contact distance of the box bounding the particle's path until its next cell crossing
 /// (0.86 of the 3^D cells in 3D, 0.46 in 6D on average). `automatic`: the measured faster
-/// one for D (engine.hpp). Both find every collision; trajectories agree to round-off.
-enum class Scan { automatic, slab, horizon };
+/// `filtered`: the horizon scan, and a candidate is pair-tested only if the box bounding its
+/// own path until its next crossing (kept per particle, 8 bits per bound) comes within a
+/// contact distance of the scanner's box. `automatic`: the measured fastest one for D
+/// (engine.hpp). All find every collision; trajectories agree to round-off.
+enum class Scan { automatic, slab, horizon, filtered };
 
 /// Parameters of an EDMD run. Units: sigma (diameter of species 0) = 1, m (mass of species
 /// 0) = 1, kT = init_params.kT (default 1); time in sigma sqrt(m/kT).

@@ -55,6 +55,9 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "hypergas/collision.hpp"
 #include "hypergas/edmd/box.hpp"
@@ -80,16 +83,20 @@ class Engine {
 
  public:
   using Store = Particles<D, F>;
-  /// Config::Scan::automatic uses the horizon scan from this dimension up (measured below).
+  /// Config::Scan::automatic uses the horizon scan from this dimension up (measured below),
+  /// and filters candidates by their path boxes from auto_filter_dim up.
   static constexpr int auto_horizon_dim = 3;
+  static constexpr int auto_filter_dim = 4;
 
   /// Places cfg.n particles on a lattice at packing cfg.packing, draws velocities in state
   /// cfg.init, compresses (Lubachevsky–Stillinger) if the lattice is too tight, and predicts
   /// all events. Throws InvalidInput for bad parameters or a box below 2 diameters.
   explicit Engine(const Config& cfg)
       : debug_(cfg.debug_overlap),
-        horizon_(cfg.scan == Scan::horizon ||
-                 (cfg.scan == Scan::automatic && D >= auto_horizon_dim)) {
+        horizon_(cfg.scan == Scan::horizon || cfg.scan == Scan::filtered ||
+                 (cfg.scan == Scan::automatic && D >= auto_horizon_dim)),
+        filter_(cfg.scan == Scan::filtered ||
+                (cfg.scan == Scan::automatic && D >= auto_filter_dim)) {
     if (cfg.n < 2) throw InvalidInput("EDMD needs at least 2 particles");
     if (cfg.n > 0xFFFFFFF0ull) throw InvalidInput("EDMD: too many particles");
     if constexpr (D >= 2) check_packing(D, cfg.packing);
@@ -205,6 +212,9 @@ class Engine {
   std::uint64_t stale_events() const { return nstale_; }
   /// Pair times computed by the scans since the start (the cost measure of the cell lists).
   std::uint64_t pairs_tested() const { return npairs_; }
+  /// Predictions (neighbour scans) since the start: after collisions, crossings and stale
+  /// events whose runner-up was no longer valid.
+  std::uint64_t scans() const { return nscan_; }
   std::size_t size() const { return p_.size(); }
   double box_side() const { return L_; }
   /// Packing fraction at the current diameters.
@@ -263,11 +273,13 @@ class Engine {
     const double n = static_cast<double>(size());
     return p_.bytes_per_particle() + D * sizeof(std::int32_t) + sizeof(Ev) +
            3 * sizeof(std::uint32_t) + Queue::bytes_per_particle() +
-           cells_.bytes_per_particle(size()) + 0.0 * n;
+           cells_.bytes_per_particle(size()) + (filter_ ? sizeof(PBox) : 0) + 0.0 * n;
   }
   int cells_per_side() const { return cells_.per_side(); }
-  /// Whether predictions use the horizon scan (Config::Scan) rather than slab scans.
+  /// Whether predictions use the horizon scan (Config::Scan) rather than slab scans, and
+  /// whether they filter candidates by path boxes (Scan::filtered).
   bool horizon_scan() const { return horizon_; }
+  bool path_filter() const { return filter_; }
   /// Current diameter scale (1 after compression) and its growth rate (per unit time).
   double diameter_scale() const { return scale_ref_ + rate_ * (now_ - t_scale_); }
 
@@ -293,7 +305,7 @@ class Engine {
     scale_ref_ = diameter_scale();
     for (std::size_t i = 0; i < size(); ++i) p_.local_time(i) = 0.0;
     now_ = t_scale_ = 0.0;
-    ncoll_ = ncross_ = nstale_ = npairs_ = next_reorder_ = 0;
+    ncoll_ = ncross_ = nstale_ = npairs_ = nscan_ = next_reorder_ = 0;
     rebuild();
   }
   /// Turns the per-event all-pairs overlap check on or off; returns the previous setting.
@@ -393,6 +405,13 @@ class Engine {
       for (int k = 0; k < D; ++k) c[k] = cells_.coord(p_.position(i)[k]);
       cells_.insert(i, cells_.index(c));
     }
+    if (filter_) {  // every box is needed before the first scan
+      pbox_.resize(n);
+      for (std::uint32_t i = 0; i < n; ++i) {
+        predict_crossing(i);
+        set_path_box(i, ev_[i].t_cross - now_);
+      }
+    }
     std::vector<double> keys(n);
     for (std::uint32_t i = 0; i < n; ++i) {
       scan(i, -1, 0, Top2{});
@@ -458,25 +477,31 @@ class Engine {
           visit_.push_back({c, code});
         },
         axis, dir);
+    nvisit_ = visit_.size();
     gather(i);
     store(i, earliest_pairs(i, sc, top));
     predict_crossing(i);
   }
   /// Lists the particles of the cells in visit_, except i, as the candidates
-  /// cand_[0, ncand_), and prefetches their records. Cells hold 0.5-0.7 particles on
+  /// cand_[0, ncand_), and prefetches their records (or, records = false, their PBoxes). Cells hold 0.5-0.7 particles on
   /// average at the benchmark densities, so a loop per cell would mispredict its exit about
   /// every other cell: the first member is written without a branch (an empty cell's
   /// `none` is written and not counted), and only second and later members loop.
-  void gather(std::uint32_t i) {
-    if (cand_.size() < visit_.size() + 1) cand_.resize(2 * visit_.size() + 64);
+  [[gnu::noinline]] void gather(std::uint32_t i, bool records = true) {
+    if (cand_.size() < nvisit_ + 1) cand_.resize(2 * nvisit_ + 64);
     std::size_t n = 0;
     const auto me = static_cast<std::int32_t>(i);
     auto fetch = [&](std::int32_t j) {
-      const double* rec = p_.position(static_cast<std::size_t>(j < 0 ? 0 : j)).data();
+      const auto jj = static_cast<std::size_t>(j < 0 ? 0 : j);
+      if (!records) {  // Scan::filtered: the path box (one line) instead of the record
+        __builtin_prefetch(&pbox_[jj]);
+        return;
+      }
+      const double* rec = p_.position(jj).data();
       __builtin_prefetch(rec);
       if constexpr (Store::stride > 8) __builtin_prefetch(rec + 8);  // 4D-6D: 2 lines
     };
-    for (std::size_t v = 0; v < visit_.size(); ++v) {
+    for (std::size_t v = 0; v < nvisit_; ++v) {
       const Cand& c = visit_[v];
       std::int32_t j = cells_.head(c.j);
       fetch(j);
@@ -484,7 +509,7 @@ class Engine {
       n += static_cast<std::size_t>((j != Cells<D>::none) & (j != me));
       for (j = cells_.next(j); j != Cells<D>::none; j = cells_.next(j)) {
         // room for this member and the first members of the cells still to come
-        if (cand_.size() < n + visit_.size() - v + 1) cand_.resize(2 * cand_.size());
+        if (cand_.size() < n + nvisit_ - v + 1) cand_.resize(2 * cand_.size());
         fetch(j);
         cand_[n] = {static_cast<std::uint32_t>(j), c.shift};
         n += static_cast<std::size_t>(j != me);
@@ -500,6 +525,7 @@ class Engine {
   Top2 earliest_pairs(std::uint32_t i, double sc, Top2 top) {
     const std::size_t n = ncand_;
     npairs_ += n;
+    ++nscan_;
     if (dots_.size() < 4 * n) dots_.resize(4 * n);
     double* rv = dots_.data();
     double* vv = rv + n;
@@ -524,6 +550,48 @@ class Engine {
     return top;
   }
 
+  /// Box bounding a particle's straight path from its last scan to its next cell crossing
+  /// (Scan::filtered), on a grid of 2^16 levels per box side L, rounded outward. Every
+  /// event that changes a path (collision, crossing, stale rescan) rescans the particle and
+  /// rewrites its box; until the first scan it is the whole box. A collision at t* found by
+  /// the later scanner i of a pair (scan_horizon's argument) has the partner j at t* on the
+  /// path j had at its last scan, so inside j's box: a j whose box is farther than a contact
+  /// distance from i's box is not a partner to find now, and is skipped.
+  /// Lanes 2k, 2k+1 hold lo_k and -hi_k modulo 2^16; a scanner's `probe` holds hi_k and
+  /// -lo_k, so lane-wise differences are lo_j - hi_i and lo_i - hi_j: the per-axis gaps
+  /// when positive (never both). Taken as signed 16-bit numbers they are the periodic
+  /// differences as long as they stay below L/2, which holds when the boxes lie in
+  /// neighbouring cells of a grid of 5 or more cells per side (at most 2 cells apart).
+  struct alignas(16) PBox {
+    static constexpr int lanes = 2 * D <= 8 ? 8 : 16;
+    static constexpr double levels = 65536.0;
+    std::uint16_t v[lanes];
+    /// Whether the squared gap sum of boxes b and probe is at most `bound` (levels^2,
+    /// bound < 16383^2: gaps are clamped to 16383, so that 8 squares fit in int32).
+    static bool near(const PBox& b, const PBox& probe, std::int32_t bound) {
+#if defined(__SSE2__)
+      const __m128i zero = _mm_setzero_si128(), cap = _mm_set1_epi16(16383);
+      __m128i acc = zero;
+      for (int h = 0; h < lanes; h += 8) {
+        __m128i e = _mm_sub_epi16(_mm_load_si128(reinterpret_cast<const __m128i*>(b.v + h)),
+                                  _mm_load_si128(reinterpret_cast<const __m128i*>(probe.v + h)));
+        e = _mm_min_epi16(_mm_max_epi16(e, zero), cap);
+        acc = _mm_add_epi32(acc, _mm_madd_epi16(e, e));
+      }
+      acc = _mm_add_epi32(acc, _mm_shuffle_epi32(acc, 0x4E));
+      acc = _mm_add_epi32(acc, _mm_shuffle_epi32(acc, 0xB1));
+      return _mm_cvtsi128_si32(acc) <= bound;
+#else
+      std::int32_t s = 0;
+      for (int l = 0; l < lanes; ++l) {
+        const auto e = static_cast<std::int16_t>(static_cast<std::uint16_t>(b.v[l] - probe.v[l]));
+        const std::int32_t g = std::clamp<std::int32_t>(e, 0, 16383);
+        s += g * g;
+      }
+      return s <= bound;
+#endif
+    }
+  };
   /// One stencil offset along one axis for scan_horizon: its part of the cell index, its
   /// squared gap to the path's box, and its periodic shift code (2 bits: 1 = -L, 2 = +L).
   struct AxisStep {
@@ -533,16 +601,21 @@ class Engine {
   };
   using AxisSteps = std::array<std::array<AxisStep, 3>, D>;
   /// Visits the stencil cells whose summed squared gaps stay within `bound`, axis D-1
-  /// down to 0: a partial sum above the bound skips the whole subtree of offsets.
+  /// down to 0: a partial sum above the bound skips the whole subtree of offsets. On axis 0
+  /// every offset is passed to f with a flag instead of a branch (whether a cell is kept is
+  /// unpredictable, and two thirds of the calls are there).
   template <int K, class Fn>
   static void walk_stencil(const AxisSteps& st, const std::array<int, D>& nst, double bound,
                            std::uint32_t idx, std::uint32_t code, double g2, Fn& f) {
     for (int a = 0; a < nst[K]; ++a) {
       const AxisStep& s = st[K][a];
       const double g = g2 + s.gap2;
-      if (g > bound) continue;
-      if constexpr (K == 0) f(idx + s.idx, code | s.code);
-      else walk_stencil<K - 1>(st, nst, bound, idx + s.idx, code | s.code, g, f);
+      if constexpr (K == 0) {
+        f(idx + s.idx, code | s.code, g <= bound);
+      } else {
+        if (g > bound) continue;
+        walk_stencil<K - 1>(st, nst, bound, idx + s.idx, code | s.code, g, f);
+      }
     }
   }
 
@@ -571,6 +644,7 @@ class Engine {
     AxisSteps st;
     std::array<int, D> nst{};
     std::uint32_t stride = 1;
+    const bool filter = filter_ && m >= 5;  // Scan::filtered (see PBox)
     for (int k = 0; k < D; ++k) {
       const double ext = v[k] == 0.0 ? 0.0 : v[k] * H;  // H = never only if v = 0
       const double lo = std::min(x[k], x[k] + ext), hi = std::max(x[k], x[k] + ext);
@@ -591,14 +665,68 @@ class Engine {
       nst[k] = a;
       stride *= static_cast<std::uint32_t>(m);
     }
-    visit_.clear();
-    auto add_cell = [&](std::uint32_t c, std::uint32_t code) {
+    if (visit_.size() < stencil_cells) visit_.resize(stencil_cells);
+    std::size_t nv = 0;
+    auto add_cell = [&](std::uint32_t c, std::uint32_t code, bool keep) {
       cells_.prefetch(c);
-      visit_.push_back({c, code});
+      visit_[nv] = {c, code};
+      nv += static_cast<std::size_t>(keep);
     };
     walk_stencil<D - 1>(st, nst, bound, 0u, 0u, 0.0, add_cell);
-    gather(i);
+    nvisit_ = nv;
+    if (filter_) {
+      const PBox probe = set_path_box(i, H);
+      if (filter) {
+        // smax <= cell width <= L/5, so bound <= 13108^2 (PBox::near's range).
+        const auto r = static_cast<std::int32_t>(std::ceil(smax * (PBox::levels / L_))) + 1;
+        gather_filtered(i, probe, r * r);
+      } else {
+        gather(i);
+      }
+    } else {
+      gather(i);
+    }
     store(i, earliest_pairs(i, sc, Top2{}));
+  }
+
+  /// Writes i's path box for the next H time units (i at now) and returns its probe.
+  PBox set_path_box(std::uint32_t i, double H) {
+    const double q = PBox::levels / L_;
+    const Vec<D> x = p_.position(i);
+    const Vec<D> v = p_.velocity(i);
+    PBox mine{}, probe{};
+    for (int k = 0; k < D; ++k) {  // outward to the grid; u16 casts take levels mod 2^16
+      const double ext = v[k] == 0.0 ? 0.0 : v[k] * H;  // H = never only if v = 0
+      const double lo = std::min(x[k], x[k] + ext), hi = std::max(x[k], x[k] + ext);
+      const auto glo = static_cast<std::int64_t>(std::floor(std::max(lo, 0.0) * q));
+      const auto ghi = static_cast<std::int64_t>(std::ceil(std::min(hi, L_) * q));
+      mine.v[2 * k] = static_cast<std::uint16_t>(glo);
+      mine.v[2 * k + 1] = static_cast<std::uint16_t>(-ghi);
+      probe.v[2 * k] = static_cast<std::uint16_t>(ghi);
+      probe.v[2 * k + 1] = static_cast<std::uint16_t>(-glo);
+    }
+    pbox_[i] = mine;
+    return probe;
+  }
+  /// gather() for Scan::filtered: a member j is a candidate only if PBox::near(j's box,
+  /// the scanner's probe) holds. Two passes: list every member and prefetch its box (the
+  /// boxes of a 6D scan's ~230 members are mostly outside L2), then keep the near ones;
+  /// records are prefetched for those only.
+  [[gnu::noinline]] void gather_filtered(std::uint32_t i, const PBox& probe, std::int32_t bound) {
+    gather(i, false);
+    const PBox* box = pbox_.data();
+    std::size_t n = 0;
+    for (std::size_t c = 0; c < ncand_; ++c) {
+      const Cand k = cand_[c];
+      cand_[n] = k;
+      n += static_cast<std::size_t>(PBox::near(box[k.j], probe, bound));
+    }
+    ncand_ = n;
+    for (std::size_t c = 0; c < n; ++c) {
+      const double* rec = p_.position(cand_[c].j).data();
+      __builtin_prefetch(rec);
+      if constexpr (Store::stride > 8) __builtin_prefetch(rec + 8);
+    }
   }
 
   /// Records a scan's two earliest pair events (relative times) as i's pair events.
@@ -733,6 +861,7 @@ class Engine {
     permute_records(cnt_, from, 1);
     permute_records(ev_, from, 1);
     permute_records(id_, from, 1);
+    if (filter_) permute_records(pbox_, from, 1);
     for (std::uint32_t i = 0; i < n; ++i) {
       Ev& e = ev_[i];
       if (e.partner >= 0) e.partner = static_cast<std::int32_t>(to[e.partner]);
@@ -778,6 +907,13 @@ class Engine {
   std::vector<Cand> cand_;      // scratch of scan(): candidates [0, ncand_)
   std::size_t ncand_ = 0;
   std::vector<Cand> visit_;     // scratch of scan(): stencil cells (cell, shift)
+  std::size_t nvisit_ = 0;      //   in use: [0, nvisit_)
+  static constexpr std::size_t stencil_cells = [] {
+    std::size_t c = 1;
+    for (int k = 0; k < D; ++k) c *= 3;
+    return c;
+  }();
+  std::vector<PBox> pbox_;      // Scan::filtered: each particle's path box
   std::vector<double> dots_, bases_;  // scratch of earliest_pairs()
   std::vector<std::uint32_t> id_, slot_;  // original id of each slot, and its inverse
   std::uint64_t reorder_every_ = 0, next_reorder_ = 0;  // renumbering period (collisions)
@@ -786,10 +922,11 @@ class Engine {
   double L_ = 0.0, max_base_ = 1.0;
   double now_ = 0.0;
   double scale_ref_ = 1.0, t_scale_ = 0.0, rate_ = 0.0;
-  std::uint64_t ncoll_ = 0, coll_meas_ = 0, ncross_ = 0, nstale_ = 0, npairs_ = 0;
+  std::uint64_t ncoll_ = 0, coll_meas_ = 0, ncross_ = 0, nstale_ = 0, npairs_ = 0, nscan_ = 0;
   double t_meas_ = 0.0, virial_ = 0.0;
   bool debug_ = false;
-  bool horizon_ = false;  // Config::Scan::horizon in effect
+  bool horizon_ = false;  // Config::Scan::horizon or filtered in effect
+  bool filter_ = false;   // Config::Scan::filtered in effect (pbox_ kept)
 };
 
 }  // namespace hypergas::edmd

@@ -639,7 +639,6 @@ class Engine {
       for (int s = 0; s < nst[0]; ++s) {
         const AxisStep& t = st[0][s];
         const std::uint32_t c = p.idx + t.idx;
-        cells_.prefetch(c);
         visit_[nv] = {c, p.code | t.code};
         nv += static_cast<std::size_t>(p.g2 + t.gap2 <= bound) & cells_.occupied(c);
       }

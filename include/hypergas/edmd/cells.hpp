@@ -38,14 +38,16 @@ class Cells {
  public:
   static constexpr std::int32_t none = -1;
 
-  /// Grid for a box of side `L` with cells at least `min_width` wide, for `n` particles.
-  void build(double L, double min_width, std::size_t n) {
+  /// Grid for a box of side `L` with cells at least `min_width` wide, for `n` particles,
+  /// with at most about `per_particle` cells per particle (memory).
+  void build(double L, double min_width, std::size_t n, double per_particle = 2.0) {
     m_ = static_cast<int>(std::floor(L / min_width * (1.0 - 1e-12)));
     if (m_ < 2)
       throw InvalidInput("box side " + std::to_string(L) + " is below two contact distances (" +
                          std::to_string(min_width) + "): enlarge N or lower the packing");
-    // Cap the number of cells (memory): at most ~2 cells per particle.
-    while (m_ > 3 && std::pow(static_cast<double>(m_), D) > 2.0 * static_cast<double>(n) + 64.0)
+    // Cap the number of cells (memory).
+    while (m_ > 3 &&
+           std::pow(static_cast<double>(m_), D) > per_particle * static_cast<double>(n) + 64.0)
       --m_;
     if (m_ < 3) m_ = 1;  // one cell seen under all 3^D shifts (see the file comment)
     L_ = L;

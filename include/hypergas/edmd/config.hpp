@@ -13,11 +13,13 @@ namespace hypergas::edmd {
 /// still-valid pair events and scans only the newly adjacent slab of 3^(D-1) cells.
 /// `horizon`: every prediction (crossings included) scans only the stencil cells within a
 /// contact distance of the box bounding the particle's path until its next cell crossing
-/// (0.86 of the 3^D cells in 3D, 0.46 in 6D on average). `automatic`: the measured faster
-/// `filtered`: the horizon scan, and a candidate is pair-tested only if the box bounding its
-/// own path until its next crossing (kept per particle, 8 bits per bound) comes within a
-/// contact distance of the scanner's box. `automatic`: the measured fastest one for D
-/// (engine.hpp). All find every collision; trajectories agree to round-off.
+/// (0.86 of the 3^D cells in 3D, 0.46 in 6D on average).
+/// `filtered` (5 or more cells per side; else as `horizon`): the horizon scan, and a cell,
+/// then a particle, is skipped when the box bounding its members' paths (a particle's path
+/// until its next crossing; kept per particle and as a union per cell, 8 bits per bound)
+/// is farther than a contact distance from the scanner's box. `automatic`: the measured
+/// fastest one for D (engine.hpp: slab in D <= 2, horizon in 3D, filtered from 4D). All find
+/// every collision; trajectories agree to round-off.
 enum class Scan { automatic, slab, horizon, filtered };
 
 /// Parameters of an EDMD run. Units: sigma (diameter of species 0) = 1, m (mass of species

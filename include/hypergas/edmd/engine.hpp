@@ -29,10 +29,15 @@
 // (scan_horizon) skips every cell farther than a contact distance from the box bounding the
 // particle's path to its next crossing, and a crossing rescans; in D <= 2 the slab scan
 // takes the whole stencil and a crossing keeps still-valid pair events and scans only the
-// newly adjacent slab of cells. A scan's pair times are computed in a batch, two at a time
-// and without data-dependent branches (earliest_pairs, contact_times). Measured (3D,
-// eta = 0.26; 6D, eta = 0.05): horizon/slab 1.08-1.18x in 3D, 1.26-1.46x in 5D, and in
-// 6D 642 instead of ~1130 pair times per collision; equal in 2D. An event costs O(neighbours) with the calendar queue (O(neighbours +
+// newly adjacent slab of cells. From D >= 4 the filtered scan also keeps, per particle, the
+// box bounding its path to its next crossing (PBox, 16 bytes) and per cell the union of its
+// members' boxes: a stencil cell, then a member, whose box is farther than a contact
+// distance from the scanner's is skipped (drop_far_cells, gather_filtered). A scan's pair
+// times are computed in a batch, two at a time and without data-dependent branches
+// (earliest_pairs, contact_times). Measured (3D, eta = 0.26; 6D, eta = 0.05): horizon/slab
+// 1.08-1.18x in 3D, 1.26-1.46x in 5D; in 6D ~1130 (slab), 642 (horizon) and 63 (filtered)
+// pair times per collision, and filtered/horizon about 2.3x; equal in 3D, where the
+// filter is off. An event costs O(neighbours) with the calendar queue (O(neighbours +
 // log N) with the heap; measured at 3D, eta = 0.26: equal speed at N <= 256000, the
 // calendar 1.05-1.3x the heap at N = 1e6 on a 32 MB L3, equal where the L3 holds it all).
 //

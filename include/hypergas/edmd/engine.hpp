@@ -580,8 +580,8 @@ class Engine {
   /// Lanes 2k, 2k+1 hold lo_k and -hi_k; a scanner's `probe` holds hi_k and -lo_k, so
   /// lane-wise differences are lo_j - hi_i and lo_i - hi_j: the per-axis gaps when positive
   /// (never both). The grid has 256 p levels per box side L, p = floor(m / 5) for m >= 5
-  /// cells per side (so 256 levels span about 5 cells: 0.016 sigma per level at the 6D
-  /// benchmark, 0.03 at most), and modulo 256 it is periodic in L. Boxes of a scan lie in
+  /// cells per side (so 256 levels span 5 to 9 cells: a level is at most 9/256 of a cell
+  /// width, 0.024 sigma in the 6D benchmark), and modulo 256 it is periodic in L. Boxes of a scan lie in
   /// neighbouring cells, less than 2 cells = 2 * 256 p / m <= 102.4 levels (+2 rounding)
   /// apart, so the differences taken as signed bytes are the true ones.
   struct alignas(16) PBox {

@@ -59,6 +59,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -581,9 +582,9 @@ class Engine {
   /// lane-wise differences are lo_j - hi_i and lo_i - hi_j: the per-axis gaps when positive
   /// (never both). The grid has 256 p levels per box side L, p = floor(m / 5) for m >= 5
   /// cells per side (so 256 levels span 5 to 9 cells: a level is at most 9/256 of a cell
-  /// width, 0.024 sigma in the 6D benchmark), and modulo 256 it is periodic in L. Boxes of a scan lie in
-  /// neighbouring cells, less than 2 cells = 2 * 256 p / m <= 102.4 levels (+2 rounding)
-  /// apart, so the differences taken as signed bytes are the true ones.
+  /// width, 0.024 sigma in the 6D benchmark), and modulo 256 it is periodic in L. Boxes of
+  /// a scan lie in neighbouring cells, less than 2 cells = 2 * 256 p / m <= 102.4 levels
+  /// (+2 rounding) apart, so the differences taken as signed bytes are the true ones.
   struct alignas(16) PBox {
     static constexpr int lanes = 16;
     std::uint8_t v[lanes];
@@ -603,7 +604,8 @@ class Engine {
 #else
       std::int32_t s = 0;
       for (int l = 0; l < lanes; ++l) {
-        const std::int32_t e = static_cast<std::int8_t>(static_cast<std::uint8_t>(b.v[l] - probe.v[l]));
+        const std::int32_t e =
+            static_cast<std::int8_t>(static_cast<std::uint8_t>(b.v[l] - probe.v[l]));
         const std::int32_t g = e > 0 ? e : 0;
         s += g * g;
       }
@@ -625,12 +627,12 @@ class Engine {
     std::uint32_t idx, code;
     double g2;
   };
-  /// Lists in visit_ (and prefetches) the occupied stencil cells whose summed squared gaps
-  /// stay within `bound`. Axis by axis from D-1 down to 0, every kept partial offset is extended
-  /// by the steps of the next axis, so a partial sum above the bound drops its whole
-  /// subtree; an extension is written and then counted or not, without a branch (whether
-  /// one is kept is unpredictable: in 6D about 1000 extensions give 335 cells). The cells
-  /// come in the lexicographic order of the steps, as from a depth-first walk.
+  /// Lists in visit_ the occupied stencil cells whose summed squared gaps stay within
+  /// `bound`. Axis by axis from D-1 down to 0, every kept partial offset is extended by the
+  /// steps of the next axis, so a partial sum above the bound drops its whole subtree; an
+  /// extension is written and then counted or not, without a branch (whether one is kept
+  /// is unpredictable: in 6D about 1000 extensions give 335 cells). The cells come in the
+  /// lexicographic order of the steps, as from a depth-first walk.
   void walk_stencil(const AxisSteps& st, const std::array<int, D>& nst, double bound) {
     if (nodes_.size() < 2 * stencil_cells) nodes_.resize(2 * stencil_cells);
     if (visit_.size() < stencil_cells) visit_.resize(stencil_cells);
@@ -692,8 +694,7 @@ class Engine {
     std::uint32_t stride = 1;
     const bool filter = filter_ && m >= 5;  // Scan::filtered (see PBox)
     for (int k = 0; k < D; ++k) {
-      const double ext = v[k] == 0.0 ? 0.0 : v[k] * H;  // H = never only if v = 0
-      const double lo = std::min(x[k], x[k] + ext), hi = std::max(x[k], x[k] + ext);
+      const auto [lo, hi] = path_extent(x[k], v[k], H);
       const double gdown = std::max(lo - cells_.face_lo(h[k]), 0.0);
       const double gup = std::max(cells_.face_hi(h[k]) - hi, 0.0);
       int a = 0;
@@ -712,22 +713,23 @@ class Engine {
       stride *= static_cast<std::uint32_t>(m);
     }
     walk_stencil(st, nst, bound);
-    if (filter_) {
-      const PBox probe = set_path_box(i, H);
-      if (filter) {
-        // smax <= cell width, so r <= 256 p / m + 2 <= 54 levels
-        const auto r = static_cast<std::int32_t>(std::ceil(smax * box_levels_)) + 1;
-        drop_far_cells(probe, r * r);
-        gather_filtered(i, probe, r * r);
-      } else {
-        gather(i);
-      }
+    const PBox probe = filter_ ? set_path_box(i, H) : PBox{};  // kept even if not used now
+    if (filter) {
+      // smax <= cell width, so r <= 256 p / m + 2 <= 54 levels
+      const auto r = static_cast<std::int32_t>(std::ceil(smax * box_levels_)) + 1;
+      drop_far_cells(probe, r * r);
+      gather_filtered(i, probe, r * r);
     } else {
       gather(i);
     }
     store(i, earliest_pairs(i, sc, Top2{}));
   }
 
+  /// Range of one coordinate x + v t over t in [0, H] (H = never only if v = 0).
+  static std::pair<double, double> path_extent(double x, double v, double H) {
+    const double ext = v == 0.0 ? 0.0 : v * H;
+    return {std::min(x, x + ext), std::max(x, x + ext)};
+  }
   /// Writes i's path box for the next H time units (i at now) and returns its probe.
   PBox set_path_box(std::uint32_t i, double H) {
     const double q = box_levels_;
@@ -735,8 +737,7 @@ class Engine {
     const Vec<D> v = p_.velocity(i);
     PBox mine{}, probe{};
     for (int k = 0; k < D; ++k) {  // outward to the grid; u8 casts take levels mod 2^8
-      const double ext = v[k] == 0.0 ? 0.0 : v[k] * H;  // H = never only if v = 0
-      const double lo = std::min(x[k], x[k] + ext), hi = std::max(x[k], x[k] + ext);
+      const auto [lo, hi] = path_extent(x[k], v[k], H);
       const auto glo = static_cast<std::int64_t>(std::floor(std::max(lo, 0.0) * q));
       const auto ghi = static_cast<std::int64_t>(std::ceil(std::min(hi, L_) * q));
       mine.v[2 * k] = static_cast<std::uint8_t>(glo);
@@ -762,9 +763,10 @@ class Engine {
     return u;
 #else
     PBox u;
-    for (int l = 0; l < PBox::lanes; ++l)
-      u.v[l] = static_cast<std::int8_t>(static_cast<std::uint8_t>(b.v[l] - a.v[l])) < 0 ? b.v[l]
-                                                                                        : a.v[l];
+    for (int l = 0; l < PBox::lanes; ++l) {
+      const auto d = static_cast<std::int8_t>(static_cast<std::uint8_t>(b.v[l] - a.v[l]));
+      u.v[l] = d < 0 ? b.v[l] : a.v[l];
+    }
     return u;
 #endif
   }
@@ -785,7 +787,8 @@ class Engine {
   void drop_far_cells(const PBox& probe, std::int32_t bound) {
     const std::size_t nv = nvisit_;
     constexpr std::size_t ahead = 8;
-    for (std::size_t v = 0; v < std::min(ahead, nv); ++v) __builtin_prefetch(&cbox_[visit_[v].j]);
+    for (std::size_t v = 0; v < std::min(ahead, nv); ++v)
+      __builtin_prefetch(&cbox_[visit_[v].j]);
     std::size_t n = 0;
     for (std::size_t v = 0; v < nv; ++v) {
       __builtin_prefetch(&cbox_[visit_[std::min(v + ahead, nv - 1)].j]);

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -59,8 +60,27 @@ constexpr int record_stride(int d) {
   return s;
 }
 
+/// Allocator that starts every array on a cache line (64 bytes). Eigen's aligned_allocator
+/// only guarantees its vector alignment (16 bytes without AVX): glibc then returns large
+/// arrays at 16 bytes past a page boundary, and every other 32-byte record straddled two
+/// cache lines (found at stop 16).
 template <class T>
-using AlignedVector = std::vector<T, Eigen::aligned_allocator<T>>;
+struct CacheLineAllocator {
+  using value_type = T;
+  static constexpr std::align_val_t alignment{64};
+  CacheLineAllocator() = default;
+  template <class U>
+  CacheLineAllocator(const CacheLineAllocator<U>&) noexcept {}
+  T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), alignment)); }
+  void deallocate(T* p, std::size_t) noexcept { ::operator delete(p, alignment); }
+  template <class U>
+  bool operator==(const CacheLineAllocator<U>&) const noexcept {
+    return true;
+  }
+};
+
+template <class T>
+using AlignedVector = std::vector<T, CacheLineAllocator<T>>;
 }  // namespace detail
 
 /// Reorders an array of records of `width` entries each: afterwards record i is the former

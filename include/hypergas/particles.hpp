@@ -6,7 +6,8 @@
 // compile. The kinematic state lives in one flat array with a fixed stride per particle
 // (`Particles::stride`, doubles):
 //  * velocity-space scenes: the velocity, padded to a power of two for D = 3, 5, 6
-//    (strides 1, 2, 4, 4, 8, 8), so that one particle never straddles two cache lines;
+//    (strides 1, 2, 4, 4, 8, 8), so that one particle never straddles two cache lines
+//    (the array starts on a cache line: CacheLineAllocator);
 //  * scenes with positions: one record [position (D), local clock (1), velocity (D)]
 //    padded to a power of two (strides 4, 8, 8, 16, 16, 16): event-driven MD reads all
 //    three of a neighbour at once, and one 64-byte record in 3D is one cache miss where

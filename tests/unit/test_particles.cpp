@@ -1,7 +1,9 @@
 // Compile-time proof that absent particle fields cost nothing (include/hypergas/particles.hpp).
 #include <catch2/catch.hpp>
 
+#include <cstdint>
 #include <type_traits>
+#include <vector>
 
 #include "hypergas/particles.hpp"
 
@@ -54,6 +56,25 @@ TEST_CASE("equal-mass 3D velocity storage uses 32 bytes per particle", "[particl
   REQUIRE(p.inv_mass(17) == 1.0);
   Particles<3, with_positions> q(1000);
   REQUIRE(q.bytes_per_particle() == 64.0);
+}
+
+// A power-of-two record stays in one cache line only if the array starts on one; until
+// stop 16 it started 16 bytes past a line (Eigen's 16-byte allocator, glibc's large-block
+// header), so every other 3D DSMC record straddled two lines. Sizes cover glibc's small
+// (brk) and large (mmap) blocks; permute() reallocates.
+TEST_CASE("the state array starts on a 64-byte cache line", "[particles]") {
+  auto line_offset = [](const double* a) { return reinterpret_cast<std::uintptr_t>(a) % 64; };
+  for (std::size_t n : {1ul, 3ul, 1000ul, 100000ul, 1000000ul}) {
+    Plain3 p(n);
+    CHECK(line_offset(p.velocity_data().data()) == 0);
+    Particles<6, with_positions> q(n);
+    CHECK(line_offset(q.velocity_data().data()) == 0);
+  }
+  Plain3 p(1000);
+  std::vector<std::uint32_t> from(1000);
+  for (std::uint32_t i = 0; i < 1000; ++i) from[i] = 999 - i;
+  p.permute(from);
+  CHECK(line_offset(p.velocity_data().data()) == 0);
 }
 
 TEST_CASE("fields read back what was written", "[particles]") {

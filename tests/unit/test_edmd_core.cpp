@@ -319,8 +319,8 @@ TEMPLATE_TEST_CASE_SIG("horizon, filtered and slab scans give the same collision
     REQUIRE_FALSE(slab.horizon_scan());
     REQUIRE(horizon.horizon_scan());
     REQUIRE((filtered.horizon_scan() && filtered.path_filter()));
-    INFO("D = " << D << ", n = " << cfg.n << ", cells per side " << slab.cells_per_side() << " (filtered: "
-                      << filtered.cells_per_side() << ")");
+    INFO("D = " << D << ", n = " << cfg.n << ", cells per side " << slab.cells_per_side()
+                << " (filtered: " << filtered.cells_per_side() << ")");
     REQUIRE(slab.cells_per_side() >= 3);
     if (!check) REQUIRE(filtered.cells_per_side() >= 5);
     LastState a, b, c;

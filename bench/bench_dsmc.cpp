@@ -1,12 +1,16 @@
-// bench_dsmc: DSMC throughput, one JSON object per line (see dsmc_bench.hpp).
+// bench_dsmc: DSMC throughput, one JSON object per line (hypergas/studies/throughput.hpp).
 // Usage: bench_dsmc [--dims 1,2,3] [--ns 10000,1000000] [--reps 3] [--min-collisions 5e6]
-//                   [--model hs|maxwell|vhs] [--threads 2] [--clock wall|cpu]
+//                   [--model NAME] [--threads 2] [--clock wall|cpu]
+// (NAME: a collision model of hypergas/registry.hpp)
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
-#include "dsmc_bench.hpp"
+#include "hypergas/error.hpp"
+#include "hypergas/registry.hpp"
+#include "hypergas/studies/throughput.hpp"
 
 namespace {
 template <class T>
@@ -20,14 +24,16 @@ std::vector<T> parse_list(const std::string& s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  hypergas::bench::DsmcBenchOptions o;
+  namespace registry = hypergas::registry;
+  hypergas::studies::DsmcBenchOptions o;
   try {
     for (int i = 1; i < argc; i += 2) {
       const std::string k = argv[i];
       if (k == "-h" || k == "--help") {
         std::cout << "Usage: bench_dsmc [--dims 1,2,3] [--ns 10000,1000000] [--reps 3]\n"
-                     "                  [--min-collisions 5e6] [--model hs|maxwell|vhs]"
-                     " [--threads 2] [--clock wall|cpu]\n"
+                     "                  [--min-collisions 5e6] [--model "
+                  << registry::join(registry::model_names(), "|")
+                  << "] [--threads 2] [--clock wall|cpu]\n"
                      "DSMC throughput, one JSON object per line (same as hypergas bench).\n"
                      "--clock cpu: rates per CPU second of the thread (for A/B runs on a\n"
                      "shared machine; the default is wall seconds).\n";
@@ -48,12 +54,13 @@ int main(int argc, char** argv) {
       else if (k == "--clock") {
         if (v != "wall" && v != "cpu") throw hypergas::InvalidInput("--clock must be wall or cpu");
         o.cpu_clock = v == "cpu";
-      } else if (k == "--model")
-        o.model = hypergas::dsmc::parse_model(v);
-      else
+      } else if (k == "--model") {
+        registry::model(v);  // unknown names fail here, before any output
+        o.model = v;
+      } else
         throw hypergas::InvalidInput("unknown option " + k);
     }
-    hypergas::bench::run_dsmc_bench(std::cout, o);
+    hypergas::studies::run_dsmc_bench(std::cout, o);
   } catch (const std::exception& e) {
     std::cerr << "bench_dsmc: " << e.what() << '\n';
     return 2;

@@ -1,21 +1,28 @@
-// bench_edmd: EDMD collisions per second (one core) for the cases; JSON lines.
-// Usage: bench_edmd [dim n packing [collisions [repeats [calendar|heap [auto|slab|horizon|filtered]]]]]
-// (no arguments: the default cases; the last two pick the event queue and the neighbour
-// scan, edmd/config.hpp).
+// bench_edmd: EDMD collisions per second (one core), JSON lines
+// (hypergas/studies/throughput.hpp).
+// Usage: bench_edmd [dim n packing [collisions [repeats [calendar [SCAN]]]]]
+// No arguments: the default cases. The sixth argument names the event queue; the engine
+// has one, the calendar queue (the binary heap, `heap`, was removed). SCAN picks the
+// neighbour scan: auto (the engine's default for D) or a scan policy of edmd/engine.hpp.
 #include <cstdlib>
 #include <iostream>
 #include <string>
 
-#include "edmd_bench.hpp"
+#include "hypergas/registry.hpp"
+#include "hypergas/studies/throughput.hpp"
 
 int main(int argc, char** argv) {
-  using namespace hypergas::bench;
+  using namespace hypergas::studies;
+  const std::string scans = hypergas::registry::join(edmd_scan_names(), "|");
   const std::string queue = argc > 6 ? argv[6] : "calendar";
-  const std::string scan = argc > 7 ? argv[7] : "auto";
-  if (argc == 2 || argc == 3 || argc > 8 || (queue != "calendar" && queue != "heap") ||
-      (scan != "auto" && scan != "slab" && scan != "horizon" && scan != "filtered")) {
-    std::cerr << "Usage: bench_edmd [dim n packing [collisions [repeats [calendar|heap "
-                 "[auto|slab|horizon|filtered]]]]]\n"
+  if (queue == "heap") {
+    std::cerr << "bench_edmd: the binary-heap event queue was removed; the engine uses the "
+                 "calendar queue (pass calendar or nothing)\n";
+    return 2;
+  }
+  if (argc == 2 || argc == 3 || argc > 8 || queue != "calendar") {
+    std::cerr << "Usage: bench_edmd [dim n packing [collisions [repeats [calendar [" << scans
+              << "]]]]]\n"
                  "EDMD collisions per CPU second, one JSON object per line; no arguments:\n"
                  "3D N = 4000, 32000, 256000 at eta = 0.26 and 6D N = 32000 at eta = 0.05.\n";
     const std::string a = argc > 1 ? argv[1] : "";
@@ -29,11 +36,7 @@ int main(int argc, char** argv) {
       c.packing = std::atof(argv[3]);
       if (argc >= 5) c.collisions = static_cast<std::uint64_t>(std::atoll(argv[4]));
       if (argc >= 6) c.repeats = std::atoi(argv[5]);
-      c.heap = queue == "heap";
-      c.scan = scan == "slab"      ? hypergas::edmd::Scan::slab
-               : scan == "horizon" ? hypergas::edmd::Scan::horizon
-               : scan == "filtered" ? hypergas::edmd::Scan::filtered
-                                   : hypergas::edmd::Scan::automatic;
+      if (argc >= 8) c.scan = argv[7];
       run_edmd_bench(c, std::cout);
       return 0;
     }

@@ -1,15 +1,16 @@
-// bench_report -- the error-against-run-time study (bench/report_study.hpp) as a standalone
-// program; `hypergas report` runs the same code.
+// bench_report -- the error-against-run-time study (hypergas/studies/report.hpp) as a
+// standalone program; `hypergas report` runs the same code.
 //   bench_report [--quick] [--out DIR] [--seed S] [--threads K] [--no-plot]
 // Writes DIR/work_precision.csv, slopes.csv, finite_n.csv, ntc.csv, work_precision.png.
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 
-#include "report_study.hpp"
+#include "hypergas/error.hpp"
+#include "hypergas/studies/report.hpp"
 
 int main(int argc, char** argv) {
-  hypergas::bench::ReportOptions o;
+  hypergas::studies::ReportOptions o;
   try {
     for (int k = 1; k < argc; ++k) {
       const std::string a = argv[k];
@@ -24,7 +25,7 @@ int main(int argc, char** argv) {
       else if (a == "--threads") o.threads = std::stoi(next());
       else throw hypergas::InvalidInput("unknown option " + a);
     }
-    return hypergas::bench::run_report(o);
+    return hypergas::studies::run_report(o);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_report: %s\n", e.what());
     return 2;

@@ -1,10 +1,18 @@
 #!/usr/bin/env bash
 # Sets up hypergas from nothing on Debian 12: installs the Debian packages it needs (only
 # those missing; non-interactive; as root or through sudo), then configures and builds a
-# Release build in ./build. Idempotent: a second run installs nothing and rebuilds only
-# what changed. Extra arguments are passed to the CMake configure step.
+# Release build in ./build: only the `hypergas` command (what the default scene needs), or
+# with --all everything (tests, examples, benchmarks). Idempotent: a second run installs
+# nothing and rebuilds only what changed. Other arguments are passed to the CMake
+# configure step.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+targets=(--target hypergas_cli)
+args=()
+for a in "$@"; do
+  if [ "$a" = "--all" ]; then targets=(); else args+=("$a"); fi
+done
 
 packages=(
   build-essential cmake pkg-config       # toolchain
@@ -33,5 +41,5 @@ if ((${#missing[@]})); then
 fi
 
 jobs=$(nproc 2>/dev/null || echo 2)
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "$@" >&2
-cmake --build build -j "$jobs" >&2
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release ${args[@]+"${args[@]}"} >&2
+cmake --build build -j "$jobs" ${targets[@]+"${targets[@]}"} >&2

@@ -26,7 +26,7 @@ int run_command(const RunOptions& o);
 int bench_command(const BenchOptions& o);
 
 /// Registers `hypergas report` and its options on `app` (error against run time, the study
-/// of bench/report_study.hpp); returns the subcommand.
+/// of hypergas/studies/report.hpp); returns the subcommand.
 CLI::App* add_report_command(CLI::App& app);
 /// Runs `hypergas report` (after parsing). Returns the exit code.
 int report_command();

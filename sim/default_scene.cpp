@@ -23,8 +23,8 @@
 #include "hypergas/error.hpp"
 #include "hypergas/rng.hpp"
 #include "hypergas/vec.hpp"
+#include "hypergas/studies/gnuplot.hpp"
 #include "output_dir.hpp"
-#include "plot.hpp"
 #include "plot_scripts.hpp"
 #include "progress.hpp"
 
@@ -53,10 +53,10 @@ double first_crossing(const std::vector<double>& x, const std::vector<double>& y
 
 RunOptions scene_run(const SceneOptions& s, int d) {
   RunOptions o;
-  o.engine = "dsmc";
+  o.engine = registry::name(registry::EngineKind::dsmc);
   o.dim = d;
-  o.model = "hs";
-  o.init = "delta";
+  o.model = dsmc::HardSpheres::name;
+  o.init = registry::name(InitialState::delta);
   o.n = s.n;
   o.seed = Rng(s.seed).split(static_cast<std::uint64_t>(d))();
   o.until = d == 1 ? 3.0 * s.until : s.until;  // the two-mass 1D gas relaxes more slowly
@@ -156,7 +156,7 @@ int default_scene(const SceneOptions& s) {
                        "collisions_per_particle", "ks_p_speed", "kurtosis_x", "kurtosis_x_err",
                        "collisions_per_s"},
                       table);
-  run_gnuplot(scene_plot_script(dims, l1_threshold), out.staging());
+  studies::run_gnuplot(scene_plot_script(dims, l1_threshold), out.staging());
   out.commit();
   fmt::print("\nwrote {}/: {} files (summary.csv, relaxation_D<d>.csv, speed_histogram_D<d>.csv",
              out.dir().string(), out.committed().size());

@@ -1,9 +1,10 @@
 // sim/engine_runs.hpp -- one run of an engine, as `hypergas run` and the default scene use it.
 //
 // `simulate` instantiates the engine for the requested (D, model, features) through
-// sim/dispatch.hpp, runs it with the analysis recorders attached and returns the recorders
-// and the summary fields; the callers decide which files to write. All engine template
-// instantiations of the command live in run_dsmc.cpp and run_edmd.cpp.
+// registry::dispatch (hypergas/registry.hpp), runs it with the analysis recorders attached
+// and returns the recorders and the summary fields; the callers decide which files to
+// write. All engine template instantiations of the command live in run_dsmc.cpp and
+// run_edmd.cpp.
 #pragma once
 
 #include <memory>

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fmt/core.h>
 #include <fmt/ranges.h>
+#include <string_view>
 
 #include "hypergas/edmd/box.hpp"
 #include "hypergas/error.hpp"
@@ -17,10 +18,6 @@ namespace {
 bool finite_positive(double x) { return std::isfinite(x) && x > 0.0; }
 
 [[noreturn]] void bad(const std::string& msg) { throw InvalidInput(msg); }
-
-bool contains(const std::vector<std::string>& names, const std::string& s) {
-  return std::find(names.begin(), names.end(), s) != names.end();
-}
 
 void check_dim(int d, const char* opt) {
   if (d < min_dim || d > max_dim)
@@ -39,35 +36,32 @@ std::vector<double> jamming_list() {
   return v;
 }
 
-const std::vector<std::string> engine_names{"dsmc", "edmd"};
-const std::vector<std::string> model_names{"hs", "maxwell", "vhs"};
-}  // namespace
-
-const std::vector<std::string>& init_names() {
-  static const std::vector<std::string> names(initial_state_names.begin(),
-                                              initial_state_names.end());
-  return names;
+bool is_one_of(const std::vector<std::string_view>& names, const std::string& s) {
+  return std::find(names.begin(), names.end(), s) != names.end();
 }
 
-std::string default_init(EngineKind e) { return e == EngineKind::dsmc ? "delta" : "maxwell"; }
+void check_model(const std::string& m) {
+  if (!is_one_of(registry::model_names(), m))
+    bad(fmt::format("unknown model '{}' (--model must be one of: {})", m,
+                    registry::join(registry::model_names(), ", ")));
+}
+
+}  // namespace
 
 double jamming_packing(int dim) {
   check_dim(dim, "dimension");
   return edmd::jamming_packing(dim);  // sources in include/hypergas/edmd/box.hpp
 }
 
-EngineKind RunOptions::engine_kind() const {
-  return engine == "edmd" ? EngineKind::edmd : EngineKind::dsmc;
-}
+registry::EngineKind RunOptions::engine_kind() const { return registry::engine(engine); }
 
-ModelKind RunOptions::model_kind() const {
-  if (model == "maxwell") return ModelKind::maxwell;
-  if (model == "vhs") return ModelKind::vhs;
-  return ModelKind::hard_sphere;
+InitialState RunOptions::initial_state() const {
+  return init.empty() ? registry::default_initial_state(engine_kind())
+                      : registry::initial_state(init);
 }
 
 void add_run_options(CLI::App& app, RunOptions& o) {
-  app.add_option("--engine", o.engine, "dsmc (velocity-space collisions) | edmd (event-driven MD)")
+  app.add_option("--engine", o.engine, registry::describe(registry::engines))
       ->capture_default_str();
   app.add_option("--dim,-d", o.dim, "dimension D, 1..6")->capture_default_str();
   app.add_option("--n,-n", o.n, "number of particles, >= 2")->capture_default_str();
@@ -75,18 +69,19 @@ void add_run_options(CLI::App& app, RunOptions& o) {
                  "output folder (created if missing); files appear only when complete")
       ->required();
   app.add_flag("--json", o.json, "print the summary as one JSON object, the last stdout line");
-  app.add_option("--model", o.model,
-                 "DSMC collision model: hs (hard spheres, rate ~ |g|) | maxwell (rate "
-                 "independent of |g|) | vhs (variable hard spheres, rate ~ |g|^a, see --vhs-exponent)")
+  app.add_option("--model", o.model, "DSMC collision model: " + registry::describe_models())
       ->capture_default_str();
   app.add_option("--vhs-exponent", o.vhs_exponent,
                  "VHS rate exponent a: pair rate ~ |g|^a, in [0, 1] (hs is 1, maxwell 0)")
       ->capture_default_str();
   app.add_option("--init", o.init,
-                 fmt::format("initial velocities: {} (default: dsmc {}, edmd {}; see "
+                 fmt::format("initial velocities: {} (default: {} {}, {} {}; see "
                              "include/hypergas/initial_state.hpp)",
-                             fmt::join(init_names(), " | "), default_init(EngineKind::dsmc),
-                             default_init(EngineKind::edmd)));
+                             registry::describe(registry::initial_states),
+                             registry::name(registry::EngineKind::dsmc),
+                             registry::name(registry::default_initial_state(registry::EngineKind::dsmc)),
+                             registry::name(registry::EngineKind::edmd),
+                             registry::name(registry::default_initial_state(registry::EngineKind::edmd))));
   app.add_option("--until", o.until,
                  "end time; dsmc: equilibrium mean collision times (default 10); edmd: "
                  "sigma sqrt(m/kT) (default 20)");
@@ -112,12 +107,15 @@ void add_run_options(CLI::App& app, RunOptions& o) {
 }
 
 void add_bench_options(CLI::App& app, BenchOptions& o) {
-  app.add_option("--engine", o.engine, "dsmc | edmd | all")->capture_default_str();
+  app.add_option("--engine", o.engine,
+                 fmt::format("{} | all", registry::join(registry::engine_names(), " | ")))
+      ->capture_default_str();
   app.add_option("--dim,-d", o.dims, "dimensions to measure, each in 1..6 (repeatable)")
       ->capture_default_str();
   app.add_option("--n,-n", o.ns, "particle numbers to measure, each >= 2 (repeatable)")
       ->capture_default_str();
-  app.add_option("--model", o.model, "DSMC collision model: hs | maxwell | vhs")
+  app.add_option("--model", o.model,
+                 "DSMC collision model: " + registry::join(registry::model_names(), " | "))
       ->capture_default_str();
   app.add_option("--packing", o.packing, "EDMD packing fraction eta")->capture_default_str();
   app.add_option("--reps", o.reps, "timed runs per point, the median is reported, 1..100")
@@ -133,22 +131,23 @@ void add_bench_options(CLI::App& app, BenchOptions& o) {
 }
 
 void validate(const RunOptions& o) {
-  if (!contains(engine_names, o.engine))
-    bad(fmt::format("unknown engine '{}' (--engine must be dsmc or edmd)", o.engine));
+  if (!is_one_of(registry::engine_names(), o.engine))
+    bad(fmt::format("unknown engine '{}' (--engine must be one of: {})", o.engine,
+                    registry::join(registry::engine_names(), ", ")));
   check_dim(o.dim, "--dim");
   check_n(o.n);
   if (o.out.empty()) bad("--out must name an output folder");
-  if (!contains(model_names, o.model))
-    bad(fmt::format("unknown model '{}' (--model must be hs, maxwell or vhs)", o.model));
-  const EngineKind e = o.engine_kind();
-  if (e == EngineKind::edmd && o.model != "hs")
-    bad(fmt::format("--model {} needs --engine dsmc: event-driven MD simulates hard spheres",
-                    o.model));
+  check_model(o.model);
+  const registry::EngineKind e = o.engine_kind();
+  const bool edmd = e == registry::EngineKind::edmd;
+  if (edmd && o.model != dsmc::HardSpheres::name)
+    bad(fmt::format("--model {} needs --engine {}: event-driven MD simulates hard spheres",
+                    o.model, registry::name(registry::EngineKind::dsmc)));
   if (!(std::isfinite(o.vhs_exponent) && o.vhs_exponent >= 0.0 && o.vhs_exponent <= 1.0))
     bad(fmt::format("--vhs-exponent must be in [0, 1], got {}", o.vhs_exponent));
-  if (!o.init.empty() && !contains(init_names(), o.init))
+  if (!o.init.empty() && !is_one_of(registry::initial_state_names(), o.init))
     bad(fmt::format("unknown initial state '{}' (known: {})", o.init,
-                    fmt::join(init_names(), ", ")));
+                    registry::join(registry::initial_state_names(), ", ")));
   if (o.until >= 0.0 || std::isnan(o.until))
     if (!finite_positive(o.until))
       bad(fmt::format("--until must be a finite time > 0, got {}", o.until));
@@ -158,7 +157,7 @@ void validate(const RunOptions& o) {
   if (!finite_positive(o.packing))
     bad(fmt::format("--packing must be a finite fraction > 0, got {}", o.packing));
   const double jam = jamming_packing(o.dim);
-  if (e == EngineKind::edmd && o.packing >= jam)
+  if (edmd && o.packing >= jam)
     bad(fmt::format("--packing {} is at or above the jamming density {} of hard spheres in "
                     "D = {}",
                     o.packing, jam, o.dim));
@@ -168,27 +167,27 @@ void validate(const RunOptions& o) {
     bad(fmt::format("--fraction must be in [0, 1], got {}", o.fraction));
   if (!finite_positive(o.temperature))
     bad(fmt::format("--temperature must be a finite kT > 0, got {}", o.temperature));
-  if (e == EngineKind::edmd && o.temperature != 1.0)
+  if (edmd && o.temperature != 1.0)
     bad("--temperature applies to --engine dsmc only (edmd units fix kT = 1)");
   if (o.threads < 1 || o.threads > 64)
     bad(fmt::format("--threads must be in 1..64, got {}", o.threads));
-  if (e == EngineKind::edmd && o.threads != 1)
+  if (edmd && o.threads != 1)
     bad("--threads applies to --engine dsmc only (the EDMD engine is sequential)");
 }
 
 void validate(const BenchOptions& o) {
-  if (o.engine != "all" && !contains(engine_names, o.engine))
-    bad(fmt::format("unknown engine '{}' (--engine must be dsmc, edmd or all)", o.engine));
+  if (o.engine != "all" && !is_one_of(registry::engine_names(), o.engine))
+    bad(fmt::format("unknown engine '{}' (--engine must be one of: {}, all)", o.engine,
+                    registry::join(registry::engine_names(), ", ")));
   if (o.dims.empty()) bad("--dim needs at least one dimension");
   for (int d : o.dims) check_dim(d, "--dim");
   if (o.ns.empty()) bad("--n needs at least one particle number");
   for (long long n : o.ns) check_n(n);
-  if (!contains(model_names, o.model))
-    bad(fmt::format("unknown model '{}' (--model must be hs, maxwell or vhs)", o.model));
+  check_model(o.model);
   if (!finite_positive(o.packing))
     bad(fmt::format("--packing must be a finite fraction > 0, got {}", o.packing));
   for (int d : o.dims)
-    if (o.engine != "dsmc" && o.packing >= jamming_packing(d))
+    if (o.engine != registry::name(registry::EngineKind::dsmc) && o.packing >= jamming_packing(d))
       bad(fmt::format("--packing {} is at or above the jamming density {} in D = {}", o.packing,
                       jamming_packing(d), d));
   if (o.reps < 1 || o.reps > 100) bad(fmt::format("--reps must be in 1..100, got {}", o.reps));

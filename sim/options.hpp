@@ -11,24 +11,22 @@
 
 #include <CLI/CLI.hpp>
 
+#include "hypergas/registry.hpp"
+
 namespace hypergas::cli {
 
-/// Which engine runs the scene.
-enum class EngineKind { dsmc, edmd };
-/// Which DSMC collision model (EDMD always simulates hard spheres).
-enum class ModelKind { hard_sphere, maxwell, vhs };
-
-/// Everything `hypergas run` takes. Units: DSMC time in equilibrium mean collision times,
+/// Everything `hypergas run` takes. Engine, model and initial-state names are those of
+/// hypergas/registry.hpp. Units: DSMC time in equilibrium mean collision times,
 /// EDMD in sigma sqrt(m/kT) with sigma = m = kT = 1.
 struct RunOptions {
-  std::string engine = "dsmc";   ///< dsmc | edmd
+  std::string engine{registry::name(registry::EngineKind::dsmc)};  ///< registry::engines
   int dim = 3;                   ///< D, 1..6
   long long n = 10000;           ///< particles (signed so that negative input is caught)
   std::string out;               ///< output folder (created; files written atomically)
   bool json = false;             ///< print summary.json's object as the last stdout line
-  std::string model = "hs";      ///< hs | maxwell | vhs (DSMC)
+  std::string model{dsmc::HardSpheres::name};  ///< DSMC collision model (registry::Models)
   double vhs_exponent = 0.5;     ///< VHS rate exponent a (rate ~ |g|^a), in [0, 1]
-  std::string init;              ///< initial state name; empty = engine default
+  std::string init;              ///< initial state name; empty = the engine's default
   double until = -1.0;           ///< end time; < 0 = engine default
   double every = -1.0;           ///< sampling interval; < 0 = until / 50
   double packing = 0.1;          ///< EDMD packing fraction eta
@@ -38,16 +36,17 @@ struct RunOptions {
   std::uint64_t seed = 1;        ///< random seed
   int threads = 1;               ///< DSMC: independent replicas, one per thread
 
-  EngineKind engine_kind() const;  ///< valid after validate()
-  ModelKind model_kind() const;    ///< valid after validate()
+  registry::EngineKind engine_kind() const;  ///< valid after validate()
+  /// The initial state: --init, or the engine's default. Valid after validate().
+  InitialState initial_state() const;
 };
 
-/// Throughput study options of `hypergas bench` (see bench/dsmc_bench.hpp, edmd_bench.hpp).
+/// Throughput study options of `hypergas bench` (the studies library's throughput study).
 struct BenchOptions {
-  std::string engine = "dsmc";              ///< dsmc | edmd | all
+  std::string engine{registry::name(registry::EngineKind::dsmc)};  ///< an engine, or all
   std::vector<int> dims{1, 2, 3, 4, 5, 6};  ///< dimensions to measure
   std::vector<long long> ns{100000};        ///< particle numbers to measure
-  std::string model = "hs";                 ///< DSMC model
+  std::string model{dsmc::HardSpheres::name};  ///< DSMC model
   double packing = 0.1;                     ///< EDMD packing fraction
   int reps = 3;                             ///< timed runs per point (median reported)
   double min_collisions = 5e6;              ///< accepted collisions per timed run
@@ -64,11 +63,6 @@ void add_bench_options(CLI::App& app, BenchOptions& o);
 void validate(const RunOptions& o);
 /// Checks every bench option; throws InvalidInput on the first bad one.
 void validate(const BenchOptions& o);
-
-/// Known initial-state names (hypergas/initial_state.hpp; the same for both engines).
-const std::vector<std::string>& init_names();
-/// The initial state an engine uses without --init (dsmc: delta, edmd: maxwell).
-std::string default_init(EngineKind e);
 
 /// Largest packing fraction (exclusive) an EDMD run may ask for in D dimensions: the
 /// jamming density of edmd::jamming_packing (1, 0.82, 0.64, 0.46, 0.31, 0.20 for D = 1..6).

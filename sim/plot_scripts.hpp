@@ -1,7 +1,6 @@
-// sim/plot_scripts.hpp -- the gnuplot scripts the commands generate (PNG via pngcairo).
-//
-// Scripts read the CSV files by column name (gnuplot >= 5.0), so they keep working when
-// columns are added at the end.
+// sim/plot_scripts.hpp -- the gnuplot scripts of the command's PNG plots: the files
+// scripts/plot_run.gp and scripts/plot_scene.gp (compiled in at build time), preceded by
+// the variables they read. Run them with studies::run_gnuplot (hypergas/studies/gnuplot.hpp).
 #pragma once
 
 #include <string>

@@ -1,19 +1,18 @@
 // sim/report_command.cpp -- `hypergas report`: error against run time (CSV + PNG).
 //
-// The study is bench/report_study.hpp (shared with bench_report); this file gives it the
-// command's options, exit codes and output-folder handling (all files or none).
-#include <cmath>
-
+// The study is the studies library's (hypergas/studies/report.hpp, shared with
+// bench_report); this file gives it the command's options, exit codes and output-folder
+// handling (all files or none).
 #include <fmt/core.h>
 
 #include "commands.hpp"
+#include "hypergas/studies/report.hpp"
 #include "output_dir.hpp"
-#include "report_study.hpp"
 
 namespace hypergas::cli {
 
 namespace {
-bench::ReportOptions report_options;
+studies::ReportOptions report_options;
 }
 
 CLI::App* add_report_command(CLI::App& app) {
@@ -30,21 +29,14 @@ CLI::App* add_report_command(CLI::App& app) {
 }
 
 int report_command() {
-  bench::ReportOptions o = report_options;
+  const studies::ReportOptions& o = report_options;
   if (o.threads < 1 || o.threads > 64)
     throw InvalidInput(fmt::format("--threads must be in 1..64, got {}", o.threads));
   OutputDir out(o.out);
-  const bench::ReportResult res = bench::run_report_study(o);
-  bench::write_report(res, out.staging(), o.plot);
+  const studies::ReportResult res = studies::run_report_study(o);
+  studies::write_report(res, out.staging(), o.plot);
   out.commit();
-  fmt::print("{:<10} {:<6} {:>3} {:>8} {:>8}\n", "study", "engine", "D", "slope", "+-");
-  for (const auto& s : res.slopes)
-    fmt::print("{:<10} {:<6} {:>3} {:>8.3f} {:>8.3f}\n", s.study, s.engine, s.dim, s.slope,
-               s.slope_se);
-  if (std::isnan(res.ntc_order))
-    fmt::print("NTC step bias: not detectable at any dt (|bias| < 3 se), see ntc.csv\n");
-  else
-    fmt::print("NTC step bias order: {:.2f} +- {:.2f}\n", res.ntc_order, res.ntc_order_se);
+  fmt::print("{}", studies::report_summary(res));
   fmt::print("report written to {}/ in {:.1f} s\n", out.dir().string(), res.total_s);
   return 0;
 }

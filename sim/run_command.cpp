@@ -9,8 +9,8 @@
 #include "commands.hpp"
 #include "engine_runs.hpp"
 #include "hypergas/analysis/output.hpp"
+#include "hypergas/studies/gnuplot.hpp"
 #include "output_dir.hpp"
-#include "plot.hpp"
 #include "plot_scripts.hpp"
 
 namespace hypergas::cli {
@@ -18,14 +18,14 @@ namespace hypergas::cli {
 
 int run_command(const RunOptions& o) {
   OutputDir out(o.out);
-  const bool edmd = o.engine_kind() == EngineKind::edmd;
+  const bool edmd = o.engine_kind() == registry::EngineKind::edmd;
   const RunRecord rec = simulate(o, true);
   const analysis::JsonObject& summary = rec.summary;
   rec.moments.write_moments_csv(out.staged("moments.csv").string());
   rec.moments.write_speed_histogram_csv(out.staged("speed_histogram.csv").string());
   if (rec.vacf && rec.vacf->frames() >= 2) rec.vacf->write_csv(out.staged("vacf.csv").string());
   analysis::write_json(out.staged("summary.json").string(), summary);
-  run_gnuplot(run_plot_script(rec.vacf && rec.vacf->frames() >= 2), out.staging());
+  studies::run_gnuplot(run_plot_script(rec.vacf && rec.vacf->frames() >= 2), out.staging());
   out.commit();
 
   const auto f = [&](const char* k) { return summary_field(summary, k); };

@@ -7,11 +7,14 @@
 
 #include <fmt/core.h>
 
-#include "dispatch.hpp"
 #include "engine_runs.hpp"
 #include "hypergas/analysis/moments_recorder.hpp"
+#include "hypergas/conserved.hpp"
 #include "hypergas/dsmc/engine.hpp"
-#include "hypergas/dsmc/replicas.hpp"
+#include "hypergas/engine_concept.hpp"
+#include "hypergas/registry.hpp"
+#include "hypergas/studies/replicas.hpp"
+#include "hypergas/studies/statistics.hpp"
 #include "run_observer.hpp"
 
 namespace hypergas::cli {
@@ -23,7 +26,7 @@ double sampling_interval(double span, double every) {
 }
 
 RunRecord simulate(const RunOptions& o, bool progress) {
-  if (o.engine_kind() == EngineKind::edmd) return simulate_edmd(o, progress);
+  if (o.engine_kind() == registry::EngineKind::edmd) return simulate_edmd(o, progress);
   return simulate_dsmc(o, progress);
 }
 
@@ -52,22 +55,14 @@ double summary_number(const analysis::JsonObject& o, const std::string& key) {
 
 namespace {
 
-/// Mean and standard error of the mean of xs.
-std::pair<double, double> mean_se(const std::vector<double>& xs) {
-  double m = 0.0, v = 0.0;
-  for (double x : xs) m += x / static_cast<double>(xs.size());
-  for (double x : xs) v += (x - m) * (x - m);
-  const double k = static_cast<double>(xs.size());
-  return {m, xs.size() > 1 ? std::sqrt(v / (k - 1.0) / k) : 0.0};
-}
-
-/// Runs `threads` independent replicas (dsmc/replicas.hpp: replica 0 keeps the seed, so its
+/// Runs `threads` independent replicas (studies/replicas.hpp: replica 0 keeps the seed, so its
 /// files equal those of a one-thread run). The files come from replica 0; the summary adds
 /// totals, the aggregate rate and the replica mean of the final kurtosis with its error.
 template <int D, class Model, bool Species>
 RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress) {
   constexpr Features F{.species = Species};
   using Engine = dsmc::Engine<D, Model, F>;
+  static_assert(SimulationEngine<Engine>);
   using Clock = std::chrono::steady_clock;
   const double until = o.until > 0.0 ? o.until : 10.0;
   const double every = sampling_interval(until, o.every);
@@ -77,14 +72,14 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress) {
   std::vector<double> engine_s(k), rate(k), drift_e(k), drift_p(k), cpp(k);
   std::vector<std::int64_t> coll(k);
   const auto t0 = Clock::now();
-  dsmc::run_replicas<Engine>(cfg, k, k, [&](int r, Engine& engine) {
-    const Conserved c0 = conserved(engine.particles());
+  studies::run_replicas<Engine>(cfg, k, k, [&](int r, Engine& engine) {
+    const auto c0 = conserved(engine.particles());
     RunObserver obs({&recs[r].moments}, "dsmc", until, progress && r == 0);
     const auto t1 = Clock::now();
     engine.run_until(until, &obs, every);
     engine_s[r] =
         std::chrono::duration<double>(Clock::now() - t1).count() - obs.analysis_seconds();
-    const Conserved c1 = conserved(engine.particles());
+    const auto c1 = conserved(engine.particles());
     coll[r] = static_cast<std::int64_t>(engine.collisions());
     rate[r] = engine_s[r] > 0.0 ? static_cast<double>(coll[r]) / engine_s[r] : 0.0;
     drift_e[r] = energy_rel_drift(c0, c1);
@@ -102,11 +97,11 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress) {
     total_rate += rate[r];
     kurt.push_back((r == 0 ? rec : recs[r]).moments.column("kurtosis_x").back());
   }
-  const auto [kurt_mean, kurt_se] = mean_se(kurt);
+  const auto [kurt_mean, kurt_se] = studies::mean_se(kurt);
   const auto last = [&](const char* col) { return rec.moments.column(col).back(); };
   rec.summary = analysis::JsonObject{
       {"dim", std::int64_t{D}},
-      {"engine", std::string("dsmc")},
+      {"engine", std::string(registry::name(registry::EngineKind::dsmc))},
       {"model", o.model},
       {"n", static_cast<std::int64_t>(o.n)},
       {"seed", static_cast<std::int64_t>(o.seed)},
@@ -115,7 +110,7 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress) {
       {"collisions_per_s", total_rate},
       {"energy_rel_drift", *std::max_element(drift_e.begin(), drift_e.end())},
       {"momentum_drift", *std::max_element(drift_p.begin(), drift_p.end())},
-      {"init", o.init.empty() ? default_init(EngineKind::dsmc) : o.init},
+      {"init", std::string(registry::name(o.initial_state()))},
       {"time", until},
       {"every", every},
       {"mass_ratio", o.mass_ratio},
@@ -138,10 +133,9 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress) {
 RunRecord simulate_dsmc(const RunOptions& o, bool progress) {
   dsmc::Config cfg;
   cfg.n = static_cast<std::size_t>(o.n);
-  cfg.model = dsmc::parse_model(o.model);
   cfg.vhs_exponent = o.vhs_exponent;
   cfg.seed = o.seed;
-  cfg.init = parse_initial_state(o.init.empty() ? default_init(EngineKind::dsmc) : o.init);
+  cfg.init = o.initial_state();
   cfg.initial.kT = o.temperature;
   cfg.initial.fraction = o.fraction;
   cfg.initial.mass_ratio = o.mass_ratio;
@@ -150,14 +144,12 @@ RunRecord simulate_dsmc(const RunOptions& o, bool progress) {
     fmt::print(stderr,
                "hypergas: note: in D = 1 equal masses only swap velocities, so the gas never "
                "relaxes; use --mass-ratio R (R != 1) for a two-mass gas\n");
-  return dispatch_dim(o.dim, [&](auto d) {
-    return dispatch_model(cfg.model, [&](auto model) {
-      return dispatch_bool(species, [&](auto sp) {
-        return run<decltype(d)::value, typename decltype(model)::type, decltype(sp)::value>(
-            o, cfg, progress);
-      });
-    });
-  });
+  return registry::dispatch(
+      [&](auto dim, auto model, auto sp) {
+        return run<decltype(dim)::type::value, typename decltype(model)::type,
+                   decltype(sp)::type::value>(o, cfg, progress);
+      },
+      registry::dimension(o.dim), registry::model(o.model), registry::species(species));
 }
 
 }  // namespace hypergas::cli

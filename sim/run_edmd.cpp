@@ -2,11 +2,13 @@
 #include <chrono>
 #include <cmath>
 
-#include "dispatch.hpp"
 #include "engine_runs.hpp"
 #include "hypergas/analysis/moments_recorder.hpp"
 #include "hypergas/analysis/vacf_recorder.hpp"
+#include "hypergas/conserved.hpp"
 #include "hypergas/edmd/engine.hpp"
+#include "hypergas/engine_concept.hpp"
+#include "hypergas/registry.hpp"
 #include "run_observer.hpp"
 
 namespace hypergas::cli {
@@ -25,8 +27,9 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress) {
   const double every = sampling_interval(until - t_eq, o.every);
 
   const auto t0 = Clock::now();
+  static_assert(SimulationEngine<edmd::Engine<D, F>>);
   edmd::Engine<D, F> engine(cfg);
-  const Conserved c0 = conserved(engine.particles());
+  const auto c0 = conserved(engine.particles());
   const auto t1 = Clock::now();
   engine.run_until(t_eq);
   engine.reset_observables();
@@ -36,7 +39,7 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress) {
   RunObserver obs({&rec.moments, &vacf}, "edmd", until, progress);
   engine.run_until(until, &obs, every);
   const auto t2 = Clock::now();
-  const Conserved c1 = conserved(engine.particles());
+  const auto c1 = conserved(engine.particles());
 
   const double wall = std::chrono::duration<double>(t2 - t0).count();
   const double engine_s = std::chrono::duration<double>(t2 - t1).count() - obs.analysis_seconds();
@@ -44,8 +47,8 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress) {
   const auto last = [&](const char* col) { return rec.moments.column(col).back(); };
   rec.summary = analysis::JsonObject{
       {"dim", std::int64_t{D}},
-      {"engine", std::string("edmd")},
-      {"model", std::string("hs")},
+      {"engine", std::string(registry::name(registry::EngineKind::edmd))},
+      {"model", std::string(dsmc::HardSpheres::name)},
       {"n", static_cast<std::int64_t>(o.n)},
       {"seed", static_cast<std::int64_t>(o.seed)},
       {"collisions", coll},
@@ -57,7 +60,7 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress) {
       {"Z", engine.pressure_Z()},
       {"collision_rate", engine.collision_rate()},
       {"mean_free_time", engine.mean_free_time()},
-      {"init", o.init.empty() ? default_init(EngineKind::edmd) : o.init},
+      {"init", std::string(registry::name(o.initial_state()))},
       {"time", engine.time()},
       {"equilibration_time", t_eq},
       {"every", every},
@@ -78,16 +81,16 @@ RunRecord simulate_edmd(const RunOptions& o, bool progress) {
   cfg.n = static_cast<std::size_t>(o.n);
   cfg.packing = o.packing;
   cfg.seed = o.seed;
-  cfg.init = parse_initial_state(o.init.empty() ? default_init(EngineKind::edmd) : o.init);
-  cfg.init_params.kT = 1.0;
-  cfg.init_params.fraction = o.fraction;
-  cfg.init_params.mass_ratio = o.mass_ratio;
+  cfg.init = o.initial_state();
+  cfg.initial.kT = 1.0;
+  cfg.initial.fraction = o.fraction;
+  cfg.initial.mass_ratio = o.mass_ratio;
   const bool species = o.mass_ratio != 1.0;
-  return dispatch_dim(o.dim, [&](auto d) {
-    return dispatch_bool(species, [&](auto sp) {
-      return run<decltype(d)::value, decltype(sp)::value>(o, cfg, progress);
-    });
-  });
+  return registry::dispatch(
+      [&](auto dim, auto sp) {
+        return run<decltype(dim)::type::value, decltype(sp)::type::value>(o, cfg, progress);
+      },
+      registry::dimension(o.dim), registry::species(species));
 }
 
 }  // namespace hypergas::cli

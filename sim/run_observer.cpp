@@ -1,22 +1,9 @@
-// sim/run_observer.cpp -- conserved sums and the forwarding observer.
+// sim/run_observer.cpp -- the forwarding observer.
 #include "run_observer.hpp"
 
 #include <chrono>
 
 namespace hypergas::cli {
-
-double energy_rel_drift(const Conserved& a, const Conserved& b) {
-  return a.energy > 0.0L ? static_cast<double>(std::fabs(b.energy - a.energy) / a.energy) : 0.0;
-}
-
-double momentum_drift(const Conserved& a, const Conserved& b) {
-  long double d2 = 0.0L;
-  for (std::size_t k = 0; k < a.momentum.size(); ++k) {
-    const long double dp = b.momentum[k] - a.momentum[k];
-    d2 += dp * dp;
-  }
-  return a.momentum_scale > 0.0L ? static_cast<double>(std::sqrt(d2) / a.momentum_scale) : 0.0;
-}
 
 RunObserver::RunObserver(std::vector<Observer*> targets, const char* label, double end_time,
                          bool show_progress)

@@ -33,7 +33,6 @@ int main(int argc, char** argv) {
   // The run: hard spheres (rate ~ |g|), delta shell, seed fixed for reproducibility.
   dsmc::Config cfg;
   cfg.n = n;
-  cfg.model = dsmc::ModelKind::hs;
   cfg.init = InitialState::delta;
   cfg.seed = 1;
 

@@ -30,7 +30,6 @@ int main(int argc, char** argv) {
   const bool short_run = argc > 1 && std::strcmp(argv[1], "--short") == 0;
   dsmc::Config cfg;
   cfg.n = short_run ? 20000 : 1000000;
-  cfg.model = dsmc::ModelKind::maxwell;
   cfg.init = InitialState::bkw;
   cfg.seed = 3;
   const double until = 15.0, every = 0.5;

@@ -29,7 +29,6 @@ int main(int argc, char** argv) {
   constexpr int D = 5;
   dsmc::Config cfg;
   cfg.n = short_run ? 50000 : 1000000;
-  cfg.model = dsmc::ModelKind::maxwell;
   cfg.init = InitialState::delta;
   cfg.seed = 5;
   const double until = 10.0, every = 0.25;

@@ -30,7 +30,6 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "hypergas/error.hpp"
@@ -41,28 +40,9 @@
 
 namespace hypergas {
 
-/// The initial velocity distributions (see the file comment).
+/// The initial velocity distributions (see the file comment; names and help texts in
+/// registry.hpp).
 enum class InitialState { maxwell, delta, cube, beams, bimaxwell, bkw, two_temp };
-
-/// Command-line names, in the order of the enum.
-inline constexpr std::array<std::string_view, 7> initial_state_names = {
-    "maxwell", "delta", "cube", "beams", "bimaxwell", "bkw", "two-temp"};
-
-/// The state named `name` (e.g. "bkw", "two-temp"); throws InvalidInput for unknown names.
-inline InitialState parse_initial_state(std::string_view name) {
-  for (std::size_t k = 0; k < initial_state_names.size(); ++k)
-    if (name == initial_state_names[k]) return static_cast<InitialState>(k);
-  std::string msg = "unknown initial state '";
-  msg.append(name).append("' (expected one of:");
-  for (auto s : initial_state_names) msg.append(" ").append(s);
-  msg.append(")");
-  throw InvalidInput(msg);
-}
-
-/// The command-line name of `s`.
-inline std::string_view to_string(InitialState s) {
-  return initial_state_names[static_cast<std::size_t>(s)];
-}
 
 /// Parameters of the initial states. Temperatures in energy units (mass of species 0 = 1).
 struct InitialParams {

@@ -63,8 +63,8 @@ constexpr int record_stride(int d) {
 
 /// Allocator that starts every array on a cache line (64 bytes). Eigen's aligned_allocator
 /// only guarantees its vector alignment (16 bytes without AVX): glibc then returns large
-/// arrays at 16 bytes past a page boundary, and every other 32-byte record straddled two
-/// cache lines (found at stop 16).
+/// arrays at 16 bytes past a page boundary, and every other 32-byte record would straddle
+/// two cache lines (1.6x slower DSMC at N = 1e6, docs/benchmarks.md).
 template <class T>
 struct CacheLineAllocator {
   using value_type = T;

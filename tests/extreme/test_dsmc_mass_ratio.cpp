@@ -44,7 +44,6 @@ void check_exchange(double ratio) {
   const int heavy = ratio > 1.0 ? 1 : 0, light = 1 - heavy;
   Config cfg;
   cfg.n = N;
-  cfg.model = Model::kind;
   cfg.init = InitialState::two_temp;
   cfg.initial.mass_ratio = ratio;
   cfg.initial.fraction = 0.5;

@@ -40,7 +40,6 @@ Result run_scale(double s, int R) {
   extreme::for_replicas(R, [&](int r) {
     Config cfg;
     cfg.n = 10000;
-    cfg.model = Model::kind;
     cfg.init = InitialState::delta;
     cfg.initial.kT = s * s;
     cfg.initial.mass_ratio = 3.0;

@@ -47,7 +47,7 @@
 #include <vector>
 
 #include "extreme/extreme_common.hpp"
-#include "hypergas/dsmc/conserved.hpp"
+#include "hypergas/conserved.hpp"
 #include "hypergas/edmd/engine.hpp"
 #include "hypergas/geometry.hpp"
 
@@ -126,10 +126,10 @@ void check_exchange(double ratio) {
   cfg.n = N;
   cfg.packing = 2.0 * n_l * ball_volume(D, 1.0);  // half of the particles are light
   cfg.init = InitialState::two_temp;
-  cfg.init_params.mass_ratio = ratio;
-  cfg.init_params.fraction = 0.5;
-  cfg.init_params.kT_species[heavy] = 1e-6;
-  cfg.init_params.kT_species[light] = 1.0;
+  cfg.initial.mass_ratio = ratio;
+  cfg.initial.fraction = 0.5;
+  cfg.initial.kT_species[heavy] = 1e-6;
+  cfg.initial.kT_species[light] = 1.0;
   const double A = ball_volume(D - 1, 2.0);  // v_{D-1}(sigma), sigma = 1
   const double vbar = std::sqrt(2.0 / m_l) * std::exp(std::lgamma(0.5 * (D + 1.0)) -
                                                       std::lgamma(0.5 * D));  // E|g|
@@ -161,9 +161,9 @@ void check_exchange(double ratio) {
     // lambda_l (light cooling) uses n_h: its size barely matters (T_h << T_l).
     const double lh = base * nl_contact, ll = base * nh, lt = lh + ll;
     predicted[r] = lh / lt * (Tl0 - Th0) * -std::expm1(-lt * t_meas);
-    const auto c0 = dsmc::conserved(p);
+    const auto c0 = conserved(p);
     e.run_until(e.time() + t_meas);
-    const auto [de, dp] = extreme::drifts<D>(c0, dsmc::conserved(p));
+    const auto [de, dp] = extreme::drifts<D>(c0, conserved(p));
     rise[r] = extreme::species_temperature<D>(p, heavy) - Th0;
     bool overlap = false;
     try {

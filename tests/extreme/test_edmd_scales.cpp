@@ -28,7 +28,7 @@ Batches run_scale(double s, std::size_t n, double eta) {
   cfg.n = n;
   cfg.packing = eta;
   cfg.seed = 21 + D;
-  cfg.init_params.kT = s * s;
+  cfg.initial.kT = s * s;
   edmd::Engine<D> e(cfg);
   e.run_until(2.0 / s);  // leave the lattice start
   const double e0 = e.kinetic_energy();

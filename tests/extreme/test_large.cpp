@@ -37,9 +37,9 @@ TEST_CASE("DSMC with 1e7 particles in 3D", "[dsmc][extreme][long]") {
   cfg.n = 10000000;
   cfg.seed = 99;
   dsmc::Engine<3, dsmc::HardSpheres> e(cfg);
-  const auto c0 = dsmc::conserved(e.particles());
+  const auto c0 = conserved(e.particles());
   e.run_until(1.0);
-  const auto [de, dp] = extreme::drifts<3>(c0, dsmc::conserved(e.particles()));
+  const auto [de, dp] = extreme::drifts<3>(c0, conserved(e.particles()));
   WARN("DSMC 3D N = 1e7: " << e.bytes_per_particle() << " bytes/particle (engine), peak RSS "
                            << peak_rss_bytes() / cfg.n << " bytes/particle, " << e.collisions()
                            << " collisions");

@@ -1,7 +1,8 @@
-// The quick error-against-run-time report (bench/report_study.hpp, `hypergas report
+// The quick error-against-run-time report (hypergas/studies/report.hpp, `hypergas report
 // --quick`): the CSV files have the documented shape, every error is finite and positive,
 // the statistical error falls as run time^(-1/2), and the finite-N bias matches the exact
-// microcanonical value. Also checks that the embedded gnuplot script is scripts/plot_report.gp.
+// microcanonical value. Also checks that the script written into the folder is
+// scripts/plot_report.gp.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -11,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "../bench/report_study.hpp"
+#include "hypergas/studies/report.hpp"
 
 namespace {
 std::vector<std::string> lines(const std::filesystem::path& f) {
@@ -24,14 +25,14 @@ int fields(const std::string& l) { return 1 + static_cast<int>(std::count(l.begi
 }  // namespace
 
 TEST_CASE("hypergas report --quick: CSV shape and the statistical slope -1/2", "[report]") {
-  hypergas::bench::ReportOptions o;
+  hypergas::studies::ReportOptions o;
   o.quick = true;
   o.verbose = false;
   o.seed = 7;
-  const auto res = hypergas::bench::run_report_study(o);
+  const auto res = hypergas::studies::run_report_study(o);
   const auto dir = std::filesystem::temp_directory_path() / "hypergas_report_quick_test";
   std::filesystem::remove_all(dir);
-  hypergas::bench::write_report(res, dir, false);
+  hypergas::studies::write_report(res, dir, false);
 
   const auto wp = lines(dir / "work_precision.csv");
   REQUIRE(wp.at(0) == "study,engine,dim,param,run_s,error,error_se,replicas");
@@ -109,12 +110,18 @@ TEST_CASE("hypergas report --quick: CSV shape and the statistical slope -1/2", "
   }
 }
 
-TEST_CASE("report: the embedded gnuplot script is scripts/plot_report.gp", "[report]") {
+TEST_CASE("report: the folder's plot_report.gp is scripts/plot_report.gp", "[report]") {
+  auto text = [](const std::filesystem::path& f) {
+    std::ifstream in(f);
+    REQUIRE(in.good());
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  };
   const auto src = std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() /
                    "scripts" / "plot_report.gp";
-  std::ifstream in(src);
-  REQUIRE(in.good());
-  std::stringstream ss;
-  ss << in.rdbuf();
-  REQUIRE(ss.str() == std::string(hypergas::bench::report_plot_script));
+  const auto dir = std::filesystem::temp_directory_path() / "hypergas_report_script_test";
+  std::filesystem::remove_all(dir);
+  hypergas::studies::write_report(hypergas::studies::ReportResult{}, dir, false);
+  REQUIRE(text(dir / "plot_report.gp") == text(src));
 }

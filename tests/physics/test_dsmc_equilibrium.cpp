@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "hypergas/registry.hpp"
 #include "hypergas/dsmc/engine.hpp"
 #include "physics/test_dsmc_common.hpp"
 
@@ -54,7 +55,7 @@ void check_relaxation(InitialState s, double a) {
   const auto [d0, p0] = ks_maxwell(e.particles(), kT);
   e.run_until(25.0);
   const auto [d1, p1] = ks_maxwell(e.particles(), kT);
-  INFO("D = " << D << ", state " << to_string(s) << ", a = " << a << ": KS distance " << d0
+  INFO("D = " << D << ", state " << registry::name(s) << ", a = " << a << ": KS distance " << d0
               << " -> " << d1 << ", p = " << p1);
   if (s != InitialState::maxwell) REQUIRE(d1 < 0.5 * d0);
   REQUIRE(p1 > 1e-5);
@@ -62,8 +63,8 @@ void check_relaxation(InitialState s, double a) {
 
 template <int D>
 void relax_all_states() {
-  for (auto name : initial_state_names) {
-    const InitialState s = parse_initial_state(name);
+  for (const auto& entry : registry::initial_states) {
+    const InitialState s = entry.value;
     check_relaxation<D, HardSpheres>(s, 1.0);
     check_relaxation<D, VariableHardSpheres>(s, 0.5);
   }

@@ -29,7 +29,6 @@ TEMPLATE_TEST_CASE_SIG("Maxwell molecules: m4 relaxes at rate (D-1)/(2D)", "[dsm
   for_replicas(R, [&](int r) {
     Config cfg;
     cfg.n = N;
-    cfg.model = ModelKind::maxwell;
     cfg.init = InitialState::delta;
     cfg.seed = 1000 + 37 * D + r;
     Engine<D, MaxwellMolecules> e(cfg);

@@ -91,8 +91,8 @@ TEST_CASE("1D two-mass gas relaxes to Maxwell-Boltzmann in each species", "[edmd
   cfg.packing = 0.3;
   cfg.seed = 4;
   cfg.init = InitialState::delta;
-  cfg.init_params.mass_ratio = 3.0;
-  cfg.init_params.fraction = 0.5;
+  cfg.initial.mass_ratio = 3.0;
+  cfg.initial.fraction = 0.5;
   Mix e(cfg);
   while (e.collisions() < 40 * cfg.n / 2) e.step();
   const double tau = e.mean_free_time();

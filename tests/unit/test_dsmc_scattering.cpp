@@ -9,6 +9,8 @@
 #include <numbers>
 #include <vector>
 
+#include "support/statistics.hpp"
+#include "hypergas/registry.hpp"
 #include "hypergas/dsmc/maxwell_theory.hpp"
 #include "hypergas/dsmc/models.hpp"
 #include "hypergas/dsmc/time_unit.hpp"
@@ -16,23 +18,9 @@
 using namespace hypergas;
 using namespace hypergas::dsmc;
 
+using test_support::ks_pvalue;
+
 namespace {
-// Kolmogorov-Smirnov statistic sqrt(n) D_n of sample x against `cdf` (Stephens' correction).
-template <class Cdf>
-double ks_pvalue(std::vector<double> x, Cdf cdf) {
-  std::sort(x.begin(), x.end());
-  const double n = static_cast<double>(x.size());
-  double d = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double f = cdf(x[i]);
-    d = std::max({d, (i + 1) / n - f, f - i / n});
-  }
-  const double lambda = (std::sqrt(n) + 0.12 + 0.11 / std::sqrt(n)) * d;
-  double q = 0.0;
-  for (int k = 1; k <= 100; ++k)
-    q += 2.0 * ((k % 2) ? 1.0 : -1.0) * std::exp(-2.0 * k * k * lambda * lambda);
-  return std::clamp(q, 0.0, 1.0);
-}
 constexpr int n_samples = 100000;
 }  // namespace
 
@@ -143,11 +131,11 @@ TEST_CASE("hard-sphere deflection in 1D reverses g; g along the last axis is sta
 }
 
 TEST_CASE("models: names, exponents, acceptance rules", "[dsmc]") {
-  REQUIRE(parse_model("hs") == ModelKind::hs);
-  REQUIRE(parse_model("maxwell") == ModelKind::maxwell);
-  REQUIRE(parse_model("vhs") == ModelKind::vhs);
-  REQUIRE_THROWS_AS(parse_model("HS"), InvalidInput);
-  REQUIRE(to_string(ModelKind::vhs) == "vhs");
+  REQUIRE(registry::model("hs").index == 0);
+  REQUIRE(registry::model("maxwell").index == 1);
+  REQUIRE(registry::model("vhs").index == 2);
+  REQUIRE_THROWS_AS(registry::model("HS"), InvalidInput);
+  REQUIRE(VariableHardSpheres::name == "vhs");
   REQUIRE_THROWS_AS(VariableHardSpheres(1.5), InvalidInput);
   REQUIRE_THROWS_AS(VariableHardSpheres(-0.1), InvalidInput);
   static_assert(!MaxwellMolecules::needs_majorant && HardSpheres::needs_majorant);

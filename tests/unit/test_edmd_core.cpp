@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 #include "hypergas/edmd/engine.hpp"
@@ -88,29 +89,11 @@ TEST_CASE("batched contact times equal contact_time bit for bit", "[edmd]") {
   REQUIRE(instant > 100);
 }
 
-TEST_CASE("event queue returns times in order under updates", "[edmd]") {
-  std::mt19937_64 g(5);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<double> t(1000);
-  for (auto& x : t) x = u(g);
-  EventQueue q;
-  q.build(t);
-  for (int k = 0; k < 5000; ++k) {
-    const std::uint32_t id = static_cast<std::uint32_t>(g() % t.size());
-    t[id] = u(g);
-    q.update(id, t[id]);
-    const double mn = *std::min_element(t.begin(), t.end());
-    REQUIRE(q.top_time() == mn);
-    REQUIRE(t[q.top()] == mn);
-  }
-}
-
 TEST_CASE("calendar queue gives the minimum under EDMD-like updates", "[edmd]") {
   // The EDMD contract: new times are never earlier than the current top. Each step moves
   // the top particle to a later time and re-times a few others (partners, stale events),
   // with leads spread over four decades (so the calendar rebuilds, and the overflow list is
-  // used) and some entries "never". Checked against a brute-force minimum every step, and
-  // against the binary heap: same particle and time whenever the minimum is unique.
+  // used) and some entries "never". Checked against a brute-force minimum every step.
   std::mt19937_64 g(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const double inf = std::numeric_limits<double>::infinity();
@@ -118,20 +101,16 @@ TEST_CASE("calendar queue gives the minimum under EDMD-like updates", "[edmd]") 
     std::vector<double> t(n);
     for (auto& x : t) x = u(g) < 0.05 ? inf : std::pow(10.0, 4.0 * u(g) - 2.0);
     CalendarQueue cq;
-    EventQueue hq;
     cq.build(t);
-    hq.build(t);
     for (int k = 0; k < 20000; ++k) {
       const double mn = *std::min_element(t.begin(), t.end());
       REQUIRE(cq.top_time() == mn);
       REQUIRE(t[cq.top()] == mn);
-      if (std::count(t.begin(), t.end(), mn) == 1) REQUIRE(cq.top() == hq.top());
       const double now = std::isfinite(mn) ? mn : 0.0;
       auto retime = [&](std::uint32_t id) {
         const double r = u(g);
         t[id] = r < 0.02 ? inf : now + std::pow(10.0, 4.0 * u(g) - 3.0);
         cq.update(id, t[id]);
-        hq.update(id, t[id]);
       };
       // Others are re-timed before or after the top (before: the cached minimum must
       // follow insertions into the current bucket).
@@ -290,11 +269,52 @@ TEMPLATE_TEST_CASE_SIG("renumbering particles by position leaves every trajector
   REQUIRE(moved);
 }
 
+TEST_CASE("the automatic scan policy is slab in D <= 2, horizon in 3D, filtered from 4D",
+          "[edmd]") {
+  STATIC_REQUIRE(std::is_same_v<AutoScan<1>, SlabScan>);
+  STATIC_REQUIRE(std::is_same_v<AutoScan<2>, SlabScan>);
+  STATIC_REQUIRE(std::is_same_v<AutoScan<3>, HorizonScan>);
+  STATIC_REQUIRE(std::is_same_v<AutoScan<4>, FilteredScan>);
+  STATIC_REQUIRE(std::is_same_v<AutoScan<6>, FilteredScan>);
+  STATIC_REQUIRE(Engine<2>::scan_name == "slab");
+  STATIC_REQUIRE(Engine<3>::scan_name == "horizon");
+  STATIC_REQUIRE(Engine<5>::scan_name == "filtered");
+}
+
+TEST_CASE("run_until rejects a past or non-finite time and a bad sampling interval",
+          "[edmd]") {
+  // Observed at t0 + k every while <= t, and time() == t afterwards.
+  struct Times : Observer {
+    std::vector<double> t;
+    void observe(const Snapshot& s) override { t.push_back(s.time); }
+  } obs;
+  Config cfg;
+  cfg.n = 200;
+  cfg.packing = 0.1;
+  Engine<3> e(cfg);
+  e.run_until(0.5);
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  REQUIRE_THROWS_AS(e.run_until(0.25), InvalidInput);
+  REQUIRE_THROWS_AS(e.run_until(inf), InvalidInput);
+  REQUIRE_THROWS_AS(e.run_until(nan), InvalidInput);
+  REQUIRE_THROWS_AS(e.run_until(1.0, &obs, 0.0), InvalidInput);
+  REQUIRE_THROWS_AS(e.run_until(1.0, &obs, inf), InvalidInput);
+  REQUIRE_THROWS_AS(e.run_until(1.0, &obs, nan), InvalidInput);
+  REQUIRE(obs.t.empty());
+  REQUIRE(e.time() == 0.5);
+  e.run_until(1.0, &obs, 0.125);
+  REQUIRE(e.time() == 1.0);
+  REQUIRE(obs.t == std::vector<double>{0.5, 0.625, 0.75, 0.875, 1.0});
+  e.run_until(1.0, nullptr, nan);  // no observer: `every` is not used
+  REQUIRE(e.time() == 1.0);
+}
+
 TEMPLATE_TEST_CASE_SIG("horizon, filtered and slab scans give the same collisions", "[edmd]",
                        ((int D), D), 2, 3, 4, 5, 6) {
-  // The horizon scan (Config::Scan) skips stencil cells that cannot hold a partner before
-  // the particle's next crossing, the filtered scan also skips particles whose path boxes
-  // are too far; the slab scan skips nothing. All must find every collision, so from the
+  // The horizon scan (HorizonScan, scan.hpp) skips stencil cells that cannot hold a
+  // partner before the particle's next crossing, the filtered scan also skips particles
+  // whose path boxes are too far; the slab scan skips nothing. All must find every collision, so from the
   // same start they run the same trajectory, apart from round-off (scans at different
   // times compute a pair time from positions advanced differently): after one collision
   // per particle that difference is ~1e-14, far below the 1e-8 asserted, while one missed
@@ -310,15 +330,12 @@ TEMPLATE_TEST_CASE_SIG("horizon, filtered and slab scans give the same collision
     cfg.packing = D == 6 ? (check ? 0.01 : 0.03) : 0.3 * jamming_packing(D);
     cfg.seed = 21;
     cfg.debug_overlap = check;
-    cfg.scan = Scan::slab;
-    Engine<D> slab(cfg);
-    cfg.scan = Scan::horizon;
-    Engine<D> horizon(cfg);
-    cfg.scan = Scan::filtered;
-    Engine<D> filtered(cfg);
-    REQUIRE_FALSE(slab.horizon_scan());
-    REQUIRE(horizon.horizon_scan());
-    REQUIRE((filtered.horizon_scan() && filtered.path_filter()));
+    Engine<D, Features{.positions = true}, SlabScan> slab(cfg);
+    Engine<D, Features{.positions = true}, HorizonScan> horizon(cfg);
+    Engine<D, Features{.positions = true}, FilteredScan> filtered(cfg);
+    REQUIRE(slab.scan_name == "slab");
+    REQUIRE(horizon.scan_name == "horizon");
+    REQUIRE(filtered.scan_name == "filtered");
     INFO("D = " << D << ", n = " << cfg.n << ", cells per side " << slab.cells_per_side()
                 << " (filtered: " << filtered.cells_per_side() << ")");
     REQUIRE(slab.cells_per_side() >= 3);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "hypergas/registry.hpp"
 #include "hypergas/initial_state.hpp"
 
 using namespace hypergas;
@@ -25,17 +26,18 @@ void check_conserved(const Particles<D, F>& ps, double energy_expected) {
 }  // namespace
 
 TEST_CASE("initial states: names round-trip and unknown names throw", "[initial]") {
-  for (auto name : initial_state_names) REQUIRE(to_string(parse_initial_state(name)) == name);
-  REQUIRE(parse_initial_state("two-temp") == InitialState::two_temp);
-  REQUIRE_THROWS_AS(parse_initial_state("maxwel"), InvalidInput);
-  REQUIRE_THROWS_AS(parse_initial_state(""), InvalidInput);
+  for (auto name : registry::initial_state_names())
+    REQUIRE(registry::name(registry::initial_state(name)) == name);
+  REQUIRE(registry::initial_state("two-temp") == InitialState::two_temp);
+  REQUIRE_THROWS_AS(registry::initial_state("maxwel"), InvalidInput);
+  REQUIRE_THROWS_AS(registry::initial_state(""), InvalidInput);
 }
 
 TEMPLATE_TEST_CASE_SIG("initial states: zero momentum and exact energy in every D", "[initial]",
                        ((int D), D), 1, 2, 3, 4, 5, 6) {
-  for (auto name : initial_state_names) {
+  for (auto name : registry::initial_state_names()) {
     CAPTURE(name);
-    const InitialState s = parse_initial_state(name);
+    const InitialState s = registry::initial_state(name);
     InitialParams prm;
     prm.kT = 1.7;
     Particles<D> ps(1000);

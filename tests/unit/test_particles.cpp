@@ -58,9 +58,9 @@ TEST_CASE("equal-mass 3D velocity storage uses 32 bytes per particle", "[particl
   REQUIRE(q.bytes_per_particle() == 64.0);
 }
 
-// A power-of-two record stays in one cache line only if the array starts on one; until
-// stop 16 it started 16 bytes past a line (Eigen's 16-byte allocator, glibc's large-block
-// header), so every other 3D DSMC record straddled two lines. Sizes cover glibc's small
+// A power-of-two record stays in one cache line only if the array starts on one; with
+// Eigen's 16-byte allocator it starts 16 bytes past a line (glibc's large-block header),
+// so every other 3D DSMC record straddles two lines. Sizes cover glibc's small
 // (brk) and large (mmap) blocks; permute() reallocates.
 TEST_CASE("the state array starts on a 64-byte cache line", "[particles]") {
   auto line_offset = [](const double* a) { return reinterpret_cast<std::uintptr_t>(a) % 64; };

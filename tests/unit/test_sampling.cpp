@@ -10,28 +10,15 @@
 #include <functional>
 #include <vector>
 
+#include "support/statistics.hpp"
 #include "hypergas/geometry.hpp"
 #include "hypergas/sampling.hpp"
 
 using namespace hypergas;
 
+using test_support::ks_pvalue;
+
 namespace {
-// Two-sided Kolmogorov-Smirnov p-value of sample x against the continuous CDF `cdf`,
-// with Stephens' finite-n correction of the asymptotic Kolmogorov distribution.
-double ks_pvalue(std::vector<double> x, const std::function<double(double)>& cdf) {
-  std::sort(x.begin(), x.end());
-  const double n = static_cast<double>(x.size());
-  double d = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double f = cdf(x[i]);
-    d = std::max({d, (i + 1) / n - f, f - i / n});
-  }
-  const double lambda = (std::sqrt(n) + 0.12 + 0.11 / std::sqrt(n)) * d;
-  double q = 0.0;
-  for (int k = 1; k <= 100; ++k)
-    q += 2.0 * ((k % 2) ? 1.0 : -1.0) * std::exp(-2.0 * k * k * lambda * lambda);
-  return std::clamp(q, 0.0, 1.0);
-}
 constexpr int n_samples = 200000;
 }  // namespace
 

@@ -5,7 +5,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
-#include <string_view>
 
 #include "hypergas/dsmc/models.hpp"
 #include "hypergas/error.hpp"
@@ -16,27 +15,12 @@ namespace hypergas::dsmc {
 /// Time integration: the exact Kac process or Bird's no-time-counter scheme with a step.
 enum class Scheme { exact, ntc };
 
-/// "exact" or "ntc"; throws InvalidInput otherwise.
-inline Scheme parse_scheme(std::string_view name) {
-  if (name == "exact") return Scheme::exact;
-  if (name == "ntc") return Scheme::ntc;
-  std::string msg = "unknown DSMC scheme '";
-  msg.append(name).append("' (expected exact or ntc)");
-  throw InvalidInput(msg);
-}
-
-/// The command-line name of a scheme.
-inline std::string_view to_string(Scheme s) {
-  return s == Scheme::exact ? "exact" : "ntc";
-}
-
-/// A DSMC run. Time in equilibrium mean collision times; temperatures in energy units with
+/// A DSMC run (the collision model is the engine's Model template argument). Time in equilibrium mean collision times; temperatures in energy units with
 /// the mass of species 0 equal to 1. Two species: set `initial.mass_ratio` (m1/m0),
 /// `initial.fraction` (number fraction of species 1) and, for different initial temperatures,
 /// `init = two_temp` with `initial.kT_species`; the engine needs Features{.species = true}.
 struct Config {
   std::size_t n = 100000;                     ///< number of particles (2 .. 2^32 - 1)
-  ModelKind model = ModelKind::hs;            ///< which Model type the caller instantiates
   double vhs_exponent = 0.5;                  ///< a in the VHS rate |g|^a, 0 <= a <= 1
   Scheme scheme = Scheme::exact;              ///< exact Kac process or NTC
   double dt = 0.01;                           ///< NTC time step (mean collision times)

@@ -2,14 +2,14 @@
 //
 // Public API (what the command line calls):
 //
-//   dsmc::Config cfg;                      // n, model, vhs_exponent, scheme, dt, seed, init,
+//   dsmc::Config cfg;                      // n, vhs_exponent, scheme, dt, seed, init,
 //                                          // initial (kT, kT_species, fraction, mass_ratio)
 //   dsmc::Engine<3, dsmc::HardSpheres> e(cfg);          // samples the initial state
 //   e.run_until(10.0, &observer, 0.1);     // observe at t = 0, 0.1, ..., 10 (mean coll. times)
 //   e.time(); e.collisions(); e.candidates(); e.particles(); e.bytes_per_particle();
 //
 //   Model is HardSpheres, MaxwellMolecules or VariableHardSpheres (dsmc/models.hpp;
-//   dsmc::parse_model maps a name to ModelKind, the caller maps that to the type). Two
+//   registry.hpp turns a model name into the type). Two
 //   species: Engine<D, Model, Features{.species = true}> (masses from the species table,
 //   set by the initial state from cfg.initial.mass_ratio and .fraction).
 //
@@ -23,8 +23,7 @@
 // epoch [t, t_end] with constant G the number of candidates is Poisson(Lambda (t_end - t))
 // and their times are uniform order statistics, so no exponential waiting time is drawn per
 // candidate. When an accepted collision raises a speed above the bound, the epoch stops at
-// that candidate, the epoch's last one included (until stop 12 a raise at the M-th
-// candidate was left pending and the rest of that epoch ran on the old bound); its time is
+// that candidate, the epoch's last one included; its time is
 // the k-th of M uniform order statistics, t + (t_end - t) Beta(k, M - k + 1) (exact: the
 // marks do not depend on the times), the bound is raised and a new epoch starts there (the
 // Poisson process after a stopping time is fresh).
@@ -63,6 +62,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <random>
 #include <type_traits>
 #include <utility>
@@ -93,7 +93,9 @@ template <int D, class Model, Features F = Features{}>
 class Engine {
   // clang-format on
  public:
+  using Config = dsmc::Config;
   using ParticlesT = Particles<D, F>;
+  static constexpr int dim = D;
   static constexpr int stride = ParticlesT::stride;
 
   /// Samples cfg.n particles in the initial state cfg.init (two species only with
@@ -115,21 +117,25 @@ class Engine {
     generate(batch_[1 - cur_]);  // the batch after the (empty) current one
   }
 
-  /// Advances the process to time t (mean collision times; nothing happens if t <= time()).
-  /// With an observer, calls obs->observe at every multiple of `every` in [time(), t]
-  /// (once per instant; the initial state is observed at time 0). Throws InvalidInput if
-  /// obs is set and every is not > 0.
+  /// Advances the process to time t (mean collision times; engine_concept.hpp). With an
+  /// observer, calls obs->observe at t0, t0 + every, ... <= t, t0 = time() at the call
+  /// (a grid point within 1e-9 every above t is taken at t; an instant observed by the
+  /// previous call is not observed again). Throws InvalidInput if t is not finite or before
+  /// time(), or if obs is set and every is not finite and > 0.
   void run_until(double t, Observer* obs = nullptr, double every = 0.0) {
     if (obs && !(every > 0.0 && std::isfinite(every)))
       throw InvalidInput("DSMC: observation interval must be finite and > 0");
     if (!std::isfinite(t)) throw InvalidInput("DSMC: end time must be finite");
+    if (t < time_)
+      throw InvalidInput("DSMC: run_until(" + std::to_string(t) + "): the gas is already at t = " +
+                         std::to_string(time_));
     if (!obs) {
       advance_to(t);
       return;
     }
-    auto k = static_cast<std::uint64_t>(std::max(0.0, std::ceil(time_ / every - 1e-9)));
-    for (;; ++k) {
-      double tk = static_cast<double>(k) * every;
+    const double t0 = time_;
+    for (std::uint64_t k = 0;; ++k) {
+      double tk = t0 + static_cast<double>(k) * every;
       if (tk > t) {
         if (tk - t > 1e-9 * every) break;
         tk = t;

@@ -21,28 +21,11 @@
 
 namespace hypergas::dsmc {
 
-/// The collision models by name, for the command line.
-enum class ModelKind { hs, maxwell, vhs };
-
-/// The model named "hs", "maxwell" or "vhs"; throws InvalidInput otherwise.
-inline ModelKind parse_model(std::string_view name) {
-  if (name == "hs") return ModelKind::hs;
-  if (name == "maxwell") return ModelKind::maxwell;
-  if (name == "vhs") return ModelKind::vhs;
-  std::string msg = "unknown collision model '";
-  msg.append(name).append("' (expected hs, maxwell or vhs)");
-  throw InvalidInput(msg);
-}
-
-/// The command-line name of a model kind.
-inline std::string_view to_string(ModelKind m) {
-  return m == ModelKind::hs ? "hs" : m == ModelKind::maxwell ? "maxwell" : "vhs";
-}
-
 /// Hard spheres: rate proportional to |g|, specular reflection.
 struct HardSpheres {
   static constexpr bool needs_majorant = true;
-  static constexpr ModelKind kind = ModelKind::hs;
+  static constexpr std::string_view name = "hs";
+  static constexpr std::string_view help = "hard spheres: pair rate ~ |g|, specular reflection";
   /// The exponent a of the rate |g|^a.
   static constexpr double exponent() { return 1.0; }
   /// Accept with probability |g| / G: (u G)^2 < |g|^2.
@@ -57,7 +40,9 @@ struct HardSpheres {
 /// Maxwell molecules: rate independent of g, isotropic scattering.
 struct MaxwellMolecules {
   static constexpr bool needs_majorant = false;
-  static constexpr ModelKind kind = ModelKind::maxwell;
+  static constexpr std::string_view name = "maxwell";
+  static constexpr std::string_view help =
+      "Maxwell molecules: pair rate independent of |g|, isotropic scattering";
   static constexpr double exponent() { return 0.0; }
   static bool accept(double, double, double) { return true; }
   template <int D, class G>
@@ -70,7 +55,9 @@ struct MaxwellMolecules {
 class VariableHardSpheres {
  public:
   static constexpr bool needs_majorant = true;
-  static constexpr ModelKind kind = ModelKind::vhs;
+  static constexpr std::string_view name = "vhs";
+  static constexpr std::string_view help =
+      "variable hard spheres: pair rate ~ |g|^a (--vhs-exponent a), isotropic scattering";
   /// Throws InvalidInput unless 0 <= a <= 1.
   explicit VariableHardSpheres(double a = 0.5) : a_(a), half_a_(0.5 * a) {
     if (!(a >= 0.0 && a <= 1.0)) throw InvalidInput("VHS exponent must be in [0, 1]");
@@ -90,9 +77,11 @@ class VariableHardSpheres {
   double half_a_;
 };
 
-/// True for the three model types above.
+/// What the engine needs of a model type (the three above; registry.hpp lists them).
 template <class M>
 concept CollisionModel = requires(const M m, double x) {
+  { M::name } -> std::convertible_to<std::string_view>;
+  { M::help } -> std::convertible_to<std::string_view>;
   { M::needs_majorant } -> std::convertible_to<bool>;
   { m.exponent() } -> std::convertible_to<double>;
   { m.accept(x, x, x) } -> std::convertible_to<bool>;

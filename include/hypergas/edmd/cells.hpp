@@ -15,9 +15,9 @@
 //    {-L, 0, L}^D: every pair is tested against every image that can be within a contact
 //    distance (|d_k| < L, so the touching image has shift -L, 0 or +L on each axis), and
 //    the box faces are the cell faces, so wrapping across the box is a crossing event.
-//    The engine (Engine::scan_small_box) prunes the shifts per pair: only those whose
-//    image can come within a contact distance before the particle's next crossing are
-//    tried, typically fewer than one combination per pair instead of 3^D.
+//    The engine (scan_small_box, prediction.hpp) prunes the shifts per pair: only those
+//    whose image can come within a contact distance before the particle's next crossing
+//    are tried, typically fewer than one combination per pair instead of 3^D.
 // L < 2 s_max is rejected: a sphere would touch its own image.
 #pragma once
 

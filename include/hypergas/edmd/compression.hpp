@@ -16,16 +16,18 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 
 #include "hypergas/edmd/config.hpp"
-#include "hypergas/edmd/engine.hpp"  // (engine.hpp includes this file at its end)
 #include "hypergas/error.hpp"
 
 namespace hypergas::edmd {
 
 /// Grows the diameter scale of `e` to `target_scale` (dimensionless, 1 = nominal diameters)
-/// at relative rate cfg.growth_rate per unit time, keeping the kinetic temperature.
+/// at relative rate cfg.growth_rate per unit time, keeping the kinetic temperature. E is an
+/// edmd::Engine (engine.hpp): it uses temperature, collisions, set_debug, restart,
+/// diameter_scale, max_scale_for_cells, run_until, time, packing and check_overlaps.
 template <class E>
 void compress(E& e, double target_scale, const Config& cfg) {
   if (!(cfg.growth_rate > 0.0)) throw InvalidInput("compression growth rate must be > 0");

@@ -13,13 +13,43 @@
 // the unit-sphere area, n the number density) turned into (*) gives the contact theorem
 //     Z - 1 = 2^(D-1) eta g(sigma).
 // Both are exact for hard spheres in equilibrium; a run tests (*) by measuring Z from the
-// virial and nu from the collision count independently.
+// virial and nu from the collision count independently. The engine measures both over a
+// window of time (MeasurementWindow, Engine::reset_observables).
 #pragma once
 
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <numbers>
 
 namespace hypergas::edmd {
+
+/// The window of the collision-virial and collision-rate measurements: its start time, the
+/// collision count at its start, and the sum over its collisions of r_ij . dp_i.
+struct MeasurementWindow {
+  double t0 = 0.0;
+  std::uint64_t c0 = 0;
+  double virial = 0.0;
+
+  /// Starts a new window at time `now` after `ncoll` collisions.
+  void reset(double now, std::uint64_t ncoll) {
+    t0 = now;
+    c0 = ncoll;
+    virial = 0.0;
+  }
+  std::uint64_t collisions(std::uint64_t ncoll) const { return ncoll - c0; }
+  double time(double now) const { return now - t0; }
+  /// Reduced pressure Z = PV/(N kT) = 1 + sum_coll r_ij . dp_i / (D N kT t) of n particles
+  /// at temperature kT in D dimensions over the window up to `now`.
+  double pressure_Z(int D, std::size_t n, double kT, double now) const {
+    return 1.0 + virial / (D * static_cast<double>(n) * kT * time(now));
+  }
+  /// Collisions per particle per unit time in the window (2 per collision).
+  double collision_rate(std::size_t n, std::uint64_t ncoll, double now) const {
+    return 2.0 * static_cast<double>(collisions(ncoll)) /
+           (static_cast<double>(n) * time(now));
+  }
+};
 
 /// Collision rate per particle (per unit time) implied by Z through (*), for diameter sigma,
 /// mass m and temperature kT (equal masses).

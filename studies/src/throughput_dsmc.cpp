@@ -1,52 +1,25 @@
-// bench/dsmc_bench.hpp -- DSMC throughput benchmark, reusable by `hypergas bench`.
-//
-// For each D and N: a hard-sphere gas relaxing from the delta shell (after a warm-up of 0.5
-// mean collision times) is run for at least `min_collisions` accepted collisions, `reps`
-// times; the median collisions/s is reported with the acceptance ratio, the bytes per
-// particle and the ratio to a memory-bound probe run in the same process: random pair
-// updates (load two records of the same stride, average-and-swap their components, store)
-// over an array of the same size, with the same prefetching as the engine. One JSON object
-// per line on `out`. The engine is sequential (one core); with `threads` > 1 a second line
-// per point reports the aggregate rate of that many independent replicas run concurrently
-// (dsmc/replicas.hpp), which is how the second core is used without changing statistics.
-// Rates are per wall second; with `cpu_clock`, per CPU second of the thread (bench_clock.hpp)
-// for paired A/B runs on a shared machine. The JSON says which ("clock").
-#pragma once
-
+// DSMC throughput (throughput.hpp): timed engine runs, the memory-bound probe, replicas.
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
-#include <ostream>
 #include <string>
 #include <vector>
 
-#include "bench_clock.hpp"
+#include "clock.hpp"
 #include "hypergas/dsmc/engine.hpp"
-#include "hypergas/dsmc/replicas.hpp"
+#include "hypergas/dsmc/huge_pages.hpp"
 #include "hypergas/particles.hpp"
+#include "hypergas/registry.hpp"
 #include "hypergas/rng.hpp"
+#include "hypergas/studies/replicas.hpp"
+#include "hypergas/studies/statistics.hpp"
+#include "hypergas/studies/throughput.hpp"
 
-namespace hypergas::bench {
+namespace hypergas::studies {
 
-/// What to measure.
-struct DsmcBenchOptions {
-  std::vector<int> dims = {1, 2, 3, 4, 5, 6};
-  std::vector<std::size_t> ns = {10000, 1000000, 10000000};
-  int reps = 3;                 ///< runs per point; the median is reported
-  double min_collisions = 5e6;  ///< accepted collisions per timed run
-  dsmc::ModelKind model = dsmc::ModelKind::hs;
-  std::uint64_t seed = 1;
-  int threads = 1;  ///< > 1: also time that many independent replicas run concurrently
-  bool cpu_clock = false;  ///< rates per CPU second of the thread instead of per wall second
-};
+namespace {
 
-namespace detail {
-
-inline double median(std::vector<double> x) {
-  std::sort(x.begin(), x.end());
-  const std::size_t m = x.size() / 2;
-  return x.size() % 2 ? x[m] : 0.5 * (x[m - 1] + x[m]);
-}
+using detail::Stopwatch;
 
 /// Random pair updates per second on n records of `Particles<D>::stride` doubles.
 template <int D>
@@ -108,25 +81,12 @@ DsmcPoint time_engine(std::size_t n, double min_collisions, std::uint64_t seed, 
   return {dc / w, dk / w, dc / dk, e.bytes_per_particle(), w};
 }
 
-template <int D>
-DsmcPoint time_model(dsmc::ModelKind m, std::size_t n, double min_coll, std::uint64_t seed,
-                     bool cpu) {
-  switch (m) {
-    case dsmc::ModelKind::maxwell:
-      return time_engine<D, dsmc::MaxwellMolecules>(n, min_coll, seed, cpu);
-    case dsmc::ModelKind::vhs:
-      return time_engine<D, dsmc::VariableHardSpheres>(n, min_coll, seed, cpu);
-    default:
-      return time_engine<D, dsmc::HardSpheres>(n, min_coll, seed, cpu);
-  }
-}
-
-template <int D>
+template <int D, class Model>
 void bench_point(std::ostream& out, const DsmcBenchOptions& o, std::size_t n) {
   std::vector<double> rate, cand, acc, probe;
   double bytes = 0.0;
   for (int r = 0; r < o.reps; ++r) {
-    const DsmcPoint p = time_model<D>(o.model, n, o.min_collisions, o.seed + r, o.cpu_clock);
+    const DsmcPoint p = time_engine<D, Model>(n, o.min_collisions, o.seed + r, o.cpu_clock);
     rate.push_back(p.collisions_per_s);
     cand.push_back(p.candidates_per_s);
     acc.push_back(p.acceptance);
@@ -142,45 +102,45 @@ void bench_point(std::ostream& out, const DsmcBenchOptions& o, std::size_t n) {
                 "\"acceptance\":%.4f,\"bytes_per_particle\":%.1f,"
                 "\"probe_pair_updates_per_s\":%.4g,\"probe_ratio\":%.4f,\"threads\":1,"
                 "\"clock\":\"%s\"}",
-                std::string(dsmc::to_string(o.model)).c_str(), D, n, o.reps, cr, median(cand),
-                median(acc), bytes, pr, cr / pr, o.cpu_clock ? "cpu" : "wall");
+                std::string(Model::name).c_str(), D, n, o.reps, cr, median(cand), median(acc),
+                bytes, pr, cr / pr, o.cpu_clock ? "cpu" : "wall");
   out << buf << '\n' << std::flush;
   if (o.threads > 1) {  // aggregate throughput of independent replicas, one per thread
+    using Replica = dsmc::HardSpheres;
     dsmc::Config cfg;
     cfg.n = n;
     cfg.seed = o.seed;
     cfg.init = InitialState::delta;
     std::vector<double> coll(o.threads), wall(o.threads);
-    dsmc::run_replicas<dsmc::Engine<D, dsmc::HardSpheres>>(
-        cfg, o.threads, o.threads, [&](int r, auto& e) {
-          const auto c0 = e.collisions();
-          const Stopwatch clock(false);
-          e.run_until(2.0 * o.min_collisions / static_cast<double>(n));
-          coll[r] = static_cast<double>(e.collisions() - c0);
-          wall[r] = clock.seconds();
-        });
+    run_replicas<dsmc::Engine<D, Replica>>(cfg, o.threads, o.threads, [&](int r, auto& e) {
+      const auto c0 = e.collisions();
+      const Stopwatch clock(false);
+      e.run_until(2.0 * o.min_collisions / static_cast<double>(n));
+      coll[r] = static_cast<double>(e.collisions() - c0);
+      wall[r] = clock.seconds();
+    });
     double total = 0.0;
     for (int r = 0; r < o.threads; ++r) total += coll[r] / wall[r];
     std::snprintf(buf, sizeof buf,
-                  "{\"bench\":\"dsmc_replicas\",\"engine\":\"dsmc\",\"model\":\"hs\",\"dim\":%d,"
+                  "{\"bench\":\"dsmc_replicas\",\"engine\":\"dsmc\",\"model\":\"%s\",\"dim\":%d,"
                   "\"n\":%zu,\"threads\":%d,\"collisions_per_s\":%.4g}",
-                  D, n, o.threads, total);
+                  std::string(Replica::name).c_str(), D, n, o.threads, total);
     out << buf << '\n' << std::flush;
   }
 }
 
-}  // namespace detail
+}  // namespace
 
-/// Runs the DSMC throughput benchmark and prints one JSON line per (D, N) to `out`.
-/// Fields: collisions_per_s (median accepted collisions per second), candidates_per_s,
-/// acceptance, bytes_per_particle, probe_pair_updates_per_s, probe_ratio.
-inline void run_dsmc_bench(std::ostream& out, const DsmcBenchOptions& o = {}) {
+void run_dsmc_bench(std::ostream& out, const DsmcBenchOptions& o) {
+  const auto model = registry::model(o.model);
+  for (int d : o.dims) registry::dimension(d);  // all options checked before any output
   for (std::size_t n : o.ns)
     for (int d : o.dims)
-      for_each_dim([&](auto tag) {
-        constexpr int D = decltype(tag)::value;
-        if (D == d) detail::bench_point<D>(out, o, n);
-      });
+      registry::dispatch(
+          [&](auto dim, auto m) {
+            bench_point<decltype(dim)::type::value, typename decltype(m)::type>(out, o, n);
+          },
+          registry::dimension(d), model);
 }
 
-}  // namespace hypergas::bench
+}  // namespace hypergas::studies

@@ -1,17 +1,20 @@
-// sim/plot.cpp -- gnuplot subprocess (fork + exec, script on its stdin).
-#include "plot.hpp"
+// gnuplot subprocess (fork + exec, script on its stdin).
+#include "hypergas/studies/gnuplot.hpp"
 
-#include <cerrno>
-#include <csignal>
-#include <cstdlib>
-#include <cstring>
 #include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <fmt/core.h>
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
 
-namespace hypergas::cli {
+#include "plot_report_gp.hpp"  // generated from scripts/plot_report.gp
+
+namespace hypergas::studies {
 
 bool gnuplot_available() {
   const char* path = std::getenv("PATH");
@@ -27,10 +30,11 @@ bool gnuplot_available() {
   return false;
 }
 
-bool run_gnuplot(const std::string& script, const std::filesystem::path& dir) {
+bool run_gnuplot(std::string_view script, const std::filesystem::path& dir) {
   static bool warned = false;
   if (!gnuplot_available()) {
-    if (!warned) fmt::print(stderr, "hypergas: gnuplot not found; skipping PNG plots (CSV written)\n");
+    if (!warned)
+      std::fprintf(stderr, "hypergas: gnuplot not found; skipping PNG plots (CSV written)\n");
     warned = true;
     return false;
   }
@@ -63,8 +67,10 @@ bool run_gnuplot(const std::string& script, const std::filesystem::path& dir) {
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
   const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
-  if (!ok) fmt::print(stderr, "hypergas: gnuplot failed; PNG plots may be missing\n");
+  if (!ok) std::fprintf(stderr, "hypergas: gnuplot failed; PNG plots may be missing\n");
   return ok;
 }
 
-}  // namespace hypergas::cli
+std::string_view report_plot_script() { return embedded::plot_report_gp; }
+
+}  // namespace hypergas::studies

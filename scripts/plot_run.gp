@@ -1,0 +1,39 @@
+# plot_run.gp -- the plots of one `hypergas run` folder (the command runs it there, after
+# setting vacf):
+#   moments.png           kurtosis of v_x and L1 distance of the speeds from MB against time
+#   speed_histogram.png   final speed distribution against Maxwell-Boltzmann
+#   vacf.png              velocity autocorrelation (only with vacf = 1: EDMD runs)
+# By hand: cd RUN && gnuplot -e 'vacf = 1' plot_run.gp
+# Reads the CSV files by column name (gnuplot >= 5.0).
+if (!exists('vacf')) vacf = 0
+set terminal pngcairo size 900,600 font ',11'
+set datafile separator ','
+set key autotitle columnhead
+set grid
+set output 'moments.png'
+set multiplot layout 2,1
+set xlabel 'time'
+set ylabel 'kurtosis of v_x (MB: 3)'
+plot 'moments.csv' using 'time':'kurtosis_x' with linespoints title 'kurtosis_x', \
+     3 with lines dt 2 title 'Maxwell-Boltzmann'
+set ylabel 'L1 distance of speeds from MB'
+set logscale y
+plot 'moments.csv' using 'time':'l1_speed' with linespoints title 'L1'
+unset logscale y
+unset multiplot
+set output 'speed_histogram.png'
+set xlabel 'speed'
+set ylabel 'probability density'
+plot 'speed_histogram.csv' using (($1+$2)/2):'density' with histeps title 'simulation', \
+     '' using (($1+$2)/2):'maxwell_density' with lines title 'Maxwell-Boltzmann'
+if (vacf) {
+  set output 'vacf.png'
+  set xlabel 'time (sigma sqrt(m/kT))'
+  set ylabel 'VACF / VACF(0)'
+  set logscale xy
+  stats 'vacf.csv' using 'vacf' nooutput
+  c0 = STATS_max
+  plot 'vacf.csv' using 'time':(column('vacf')/c0) with linespoints title '<v(0).v(t)>', \
+       '' using 'time':(column('vacf') < 0 ? -column('vacf')/c0 : 1/0) with points \
+       title 'negative values (abs)'
+}

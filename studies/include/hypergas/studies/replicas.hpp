@@ -1,0 +1,39 @@
+// hypergas/studies/replicas.hpp -- independent replicas on several cores.
+//
+// The Kac process is sequential: one collision changes the state every later candidate
+// sees, so a single run cannot be split across cores without changing its statistics. The
+// second core is used for independent replicas instead: each has its own seed derived
+// from (seed, replica index), so the result does not depend on the thread count or on
+// scheduling, and the spread between replicas gives honest error bars.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <utility>
+
+namespace hypergas::studies {
+
+/// Seed of replica r of a run with seed `seed`: replica 0 keeps `seed`, replica r > 0 gets
+/// mix64(seed ^ mix64(r)) (rng.hpp).
+std::uint64_t replica_seed(std::uint64_t seed, int r);
+
+/// Calls body(r) for r = 0 .. replicas-1 on up to `threads` threads (replica r runs on
+/// thread r mod threads; thread 0 is the caller's). `body` must only write to storage
+/// indexed by r. After all threads finish, the first exception (lowest thread) thrown by a
+/// replica is rethrown here; a thread stops at its first exception.
+void for_each_replica(int replicas, int threads, const std::function<void(int)>& body);
+
+/// Constructs `replicas` engines of type EngineT from `cfg` (seed replaced by
+/// replica_seed(cfg.seed, r)) and calls body(r, engine) for each, through
+/// for_each_replica (same threads, same exceptions).
+template <class EngineT, class Config, class Body>
+void run_replicas(const Config& cfg, int replicas, int threads, Body&& body) {
+  for_each_replica(replicas, threads, [&](int r) {
+    Config c = cfg;
+    c.seed = replica_seed(cfg.seed, r);
+    EngineT e(c);
+    body(r, e);
+  });
+}
+
+}  // namespace hypergas::studies

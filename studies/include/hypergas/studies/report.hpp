@@ -1,0 +1,120 @@
+// hypergas/studies/report.hpp -- error against run time (work-precision study), the code of
+// `hypergas report` and bench_report.
+//
+//   hypergas::studies::ReportOptions o;  o.out = "report"; o.quick = true;
+//   int rc = hypergas::studies::run_report(o);   // writes CSVs + work_precision.png in o.out
+//
+// Every error is measured against an exact value, never against another run of the code:
+//   stat        DSMC hard spheres at equilibrium, D = 1..6: the time average of
+//               Q = <(m |v|^2 / kT)^2> over a run of length T, against its exact
+//               finite-N value (src/report_dsmc.cpp). Run time grows with T; the RMS error
+//               over replicas falls as (run time)^(-1/2): the statistical regime.
+//   finite_n    the same estimate for N = 200 in 3D against the Maxwell-Boltzmann value
+//               D (D + 2) (<v^4> = D (D+2) (kT/m)^2): the error levels off at the finite-N
+//               bias. finite_n.csv lists the bias against N for D = 2..6 with the exact
+//               prediction (slope -1 in N).
+//   maxwell     Maxwell molecules, D = 2..6: the relaxation rate of <|v|^4> from the delta
+//               shell, fitted over 3 e-folds, against the exact (D - 1)/(2D)
+//               (dsmc/maxwell_theory.hpp); run time grows with N.
+//   ntc         Bird's NTC scheme, 3D hard spheres: the kurtosis <v^4>/<v^2>^2 at t = 2 from
+//               the delta shell for steps dt, minus the exact scheme's value (the time-
+//               continuous process; no closed form exists for hard spheres), in ntc.csv; the
+//               order p of |bias| ~ dt^p is fitted where the bias exceeds 3 standard errors.
+//   eos         EDMD, N = 1000, D = 1..4: the reduced pressure Z from the collision virial
+//               over a window of T time units (after the lattice has melted, t = 2), against
+//                 1D rods, eta = 0.5: Tonks' exact Z = 1/(1 - eta) (L. Tonks, Phys. Rev. 50,
+//                    955 (1936)); exact for any N with kT = 2 E_kin/N, so no floor. Equal
+//                    rods only exchange velocities: the gas is N free points in the free
+//                    length L - N sigma (integrable), the collision count of a window is
+//                    fixed up to end effects, which add a 1/T term: the error falls at
+//                    least as fast as T^(-1/2) (slopes -0.6 to -0.8 measured);
+//                 2D disks, eta = 0.3: Henderson's Z = (1 + eta^2/8)/(1 - eta)^2 (Mol. Phys.
+//                    30, 971 (1975); ~2e-3 from simulation);
+//                 3D, eta = 0.2618: Carnahan-Starling (J. Chem. Phys. 51, 635 (1969); within
+//                    ~1e-3 of simulation here). At N = 1000 this code gives Z = 3.270-3.274
+//                    (six runs of 50 time units, se 0.0015), at N = 1e6 3.2686, against CS
+//                    3.2624: a floor of ~3e-3 from the finite-N bias plus CS's own error;
+//                 4D, x = B2 rho = 0.2 (eta = 0.025): the virial series 1 + x + (B3/B2^2) x^2,
+//                    B3/B2^2 = 4/3 - 3 sqrt(3)/(2 pi) (Luban & Baram, J. Chem. Phys. 76, 3233
+//                    (1982)); truncation < 0.0027 (Clisby & McCoy, J. Stat. Phys. 122, 15
+//                    (2006)), a floor of ~2e-3 relative.
+//               Relative RMS error over replicas; it falls as (run time)^(-1/2) until such a
+//               floor. The slope is fitted over the statistical part, windows T <= 4.
+//
+// Run time is the CPU time of the thread that runs the replica (CLOCK_THREAD_CPUTIME_ID):
+// on an idle core it equals wall-clock time, and on a shared machine it does not count the
+// time the thread waited, so slopes stay meaningful. Slopes are least-squares fits of
+// log10(error) against log10(run time), with their standard errors.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace hypergas::studies {
+
+/// What `run_report` computes and where it writes.
+struct ReportOptions {
+  std::string out = "report";  ///< output folder (created if missing; files replaced)
+  bool quick = false;          ///< ~20 s instead of ~5 min: fewer points and replicas
+  std::uint64_t seed = 1;      ///< all randomness derives from it
+  int threads = 2;             ///< replicas run on this many threads (1..64)
+  bool plot = true;            ///< run gnuplot (if on PATH) to write work_precision.png
+  bool verbose = true;         ///< one progress line per study on stderr
+};
+
+/// One point of a work-precision curve: relative error (RMS over replicas) of `study`
+/// at control parameter `param` (run length T, N or dt), mean run time per replica (s).
+struct ReportPoint {
+  std::string study, engine;
+  int dim = 0;
+  double param = 0.0, run_s = 0.0, error = 0.0, error_se = 0.0;
+  int replicas = 0;
+};
+
+/// Least-squares slope of log10(error) against log10(x) for one curve.
+struct ReportSlope {
+  std::string study, engine;
+  int dim = 0;
+  double slope = 0.0, slope_se = 0.0;
+  int points = 0;
+};
+
+/// One row of a bias table (finite-N bias against N, NTC bias against dt).
+struct BiasRow {
+  int dim = 0;
+  double param = 0.0, bias = 0.0, bias_se = 0.0, theory = 0.0;
+};
+
+/// Everything the report computes.
+struct ReportResult {
+  std::vector<ReportPoint> points;
+  std::vector<ReportSlope> slopes;
+  std::vector<BiasRow> finite_n, ntc;
+  double ntc_order = std::numeric_limits<double>::quiet_NaN();  ///< p in |bias| ~ dt^p
+  double ntc_order_se = std::numeric_limits<double>::quiet_NaN();
+  double total_s = 0.0;  ///< wall-clock seconds of the whole study
+};
+
+/// Runs the studies of the file comment and returns their results (nothing is written).
+/// Throws InvalidInput for bad options.
+ReportResult run_report_study(const ReportOptions& o);
+
+/// Writes work_precision.csv, slopes.csv, finite_n.csv, ntc.csv, slopes.gp and
+/// plot_report.gp (scripts/plot_report.gp) into `dir` and, with `plot`, runs gnuplot there
+/// (work_precision.png). Each file is written to a temporary name and renamed when
+/// complete. Throws InvalidInput if the folder cannot be created or written.
+void write_report(const ReportResult& res, const std::filesystem::path& dir, bool plot);
+
+/// The summary printed after a report: a table of the slopes and the NTC order, one line
+/// each, newline-terminated.
+std::string report_summary(const ReportResult& res);
+
+/// The bench_report entry point: runs the study, writes the files into o.out, prints
+/// report_summary and the folder on stdout. Returns 0; throws InvalidInput for bad options
+/// or folders.
+int run_report(const ReportOptions& o);
+
+}  // namespace hypergas::studies

@@ -1,0 +1,83 @@
+// hypergas/studies/throughput.hpp -- engine throughput, the code of `hypergas bench`,
+// bench_dsmc and bench_edmd. Both print one JSON object per line on `out`.
+//
+// DSMC: for each D and N, a gas of the chosen model relaxing from the delta shell (after a
+// warm-up of 0.5 mean collision times) is run for at least `min_collisions` accepted
+// collisions, `reps` times; the median collisions/s is reported with the acceptance ratio,
+// the bytes per particle and the ratio to a memory-bound probe run in the same process:
+// random pair updates (load two records of the same stride, average-and-swap their
+// components, store) over an array of the same size, with the same prefetching as the
+// engine. The engine is sequential (one core); with `threads` > 1 a second line per point
+// reports the aggregate rate of that many independent hard-sphere replicas run concurrently
+// (replicas.hpp), which is how the second core is used without changing statistics. Rates
+// are per wall second; with `cpu_clock`, per CPU second of the thread for paired A/B runs
+// on a shared machine. The JSON says which ("clock").
+//
+// EDMD: one case is a dimension, N, packing fraction and neighbour scan:
+//   {"bench":"edmd","queue":"calendar","scan":"horizon","dim":3,"n":32000,"packing":0.26,
+//    "repeat":0,"collisions":...,"wall_s":...,"cpu_s":...,"collisions_per_s":...,
+//    "bytes_per_particle":...,"cells_per_side":...,"Z":...,"crossings_per_collision":...,
+//    "stale_per_collision":...,"pairs_per_collision":...,"scans_per_collision":...}
+// per repeat and, after the repeats, a line with "stat":"median". Setup (lattice,
+// compression, equilibration of `warmup` collisions per particle) is not timed; the timed
+// part is `collisions` collision events on one core. collisions_per_s is per CPU second of
+// the running thread (wall_s is also printed; on a shared machine it is larger).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hypergas/dsmc/models.hpp"
+
+namespace hypergas::studies {
+
+/// What the DSMC throughput study measures.
+struct DsmcBenchOptions {
+  std::vector<int> dims = {1, 2, 3, 4, 5, 6};
+  std::vector<std::size_t> ns = {10000, 1000000, 10000000};
+  int reps = 3;                 ///< runs per point; the median is reported
+  double min_collisions = 5e6;  ///< accepted collisions per timed run
+  std::string model{dsmc::HardSpheres::name};  ///< collision model (registry::model_names())
+  std::uint64_t seed = 1;
+  int threads = 1;  ///< > 1: also time that many independent replicas run concurrently
+  bool cpu_clock = false;  ///< rates per CPU second of the thread instead of per wall second
+};
+
+/// Runs the DSMC throughput study and prints one JSON line per (D, N) (and one more per
+/// point with threads > 1) to `out`. Fields: model, dim, n, reps, collisions_per_s (median
+/// accepted collisions per second), candidates_per_s, acceptance, bytes_per_particle,
+/// probe_pair_updates_per_s, probe_ratio, threads, clock. Throws InvalidInput for an
+/// unknown model or a dimension outside 1..6.
+void run_dsmc_bench(std::ostream& out, const DsmcBenchOptions& o = {});
+
+/// One EDMD throughput case: dimension, N, packing fraction, timed collisions, repeats.
+struct EdmdCase {
+  int dim = 3;
+  std::size_t n = 32000;
+  double packing = 0.26;
+  std::uint64_t collisions = 2000000;
+  int repeats = 3;
+  double warmup = 2.0;  ///< collisions per particle before timing
+  std::uint64_t seed = 1;
+  std::string scan = "auto";  ///< neighbour scan, a name of edmd_scan_names()
+};
+
+/// The neighbour-scan choices of an EDMD case: "auto" (the engine's default for D), then the
+/// names of the scan policies (edmd/engine.hpp).
+std::vector<std::string_view> edmd_scan_names();
+
+/// Runs one case and prints its JSON lines to `out`. Throws InvalidInput for a dimension
+/// outside 1..6 or an unknown scan.
+void run_edmd_bench(const EdmdCase& c, std::ostream& out);
+
+/// The default cases: 3D at eta = 0.26 for N = 4000, 32000, 256000 (DynamO anchors 125-145k,
+/// 115-126k, 51-68k collisions/s) and 6D at N = 32000, eta = 0.05 (6D jams at 0.20; at
+/// eta = 0.1 the D_6 lattice of 32000 sites is too tight and the Lubachevsky-Stillinger
+/// compression that fixes it takes minutes at the present 6D rate), 2e5 timed collisions.
+std::vector<EdmdCase> default_edmd_cases();
+
+}  // namespace hypergas::studies

@@ -1,0 +1,88 @@
+// EDMD throughput (throughput.hpp): timed collision events per neighbour-scan policy.
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+#include "clock.hpp"
+#include "hypergas/edmd/engine.hpp"
+#include "hypergas/error.hpp"
+#include "hypergas/registry.hpp"
+#include "hypergas/studies/statistics.hpp"
+#include "hypergas/studies/throughput.hpp"
+
+namespace hypergas::studies {
+
+namespace {
+
+using detail::Stopwatch;
+
+/// The event queue the engine uses, for the JSON field "queue".
+constexpr const char* queue_name = "calendar";
+
+template <int D, class Scan>
+void edmd_case(const EdmdCase& c, std::ostream& out) {
+  std::vector<double> rates;
+  for (int r = 0; r < c.repeats; ++r) {
+    edmd::Config cfg;
+    cfg.n = c.n;
+    cfg.packing = c.packing;
+    cfg.seed = c.seed + static_cast<std::uint64_t>(r);
+    edmd::Engine<D, Features{.positions = true}, Scan> e(cfg);
+    const auto warm = static_cast<std::uint64_t>(c.warmup * static_cast<double>(c.n) / 2.0);
+    while (e.collisions() < warm) e.step();
+    e.reset_observables();
+    const std::uint64_t c0 = e.collisions(), x0 = e.crossings(), s0 = e.stale_events(),
+                        p0 = e.pairs_tested(), n0 = e.scans();
+    const Stopwatch wall_clock(false), cpu_clock(true);
+    while (e.collisions() - c0 < c.collisions) e.step();
+    const double wall = wall_clock.seconds();
+    const double cpu = cpu_clock.seconds();
+    const double rate = static_cast<double>(c.collisions) / cpu;
+    rates.push_back(rate);
+    const double per = static_cast<double>(c.collisions);
+    char buf[640];
+    std::snprintf(buf, sizeof buf,
+                  "{\"bench\":\"edmd\",\"queue\":\"%s\",\"scan\":\"%s\",\"dim\":%d,\"n\":%zu,"
+                  "\"packing\":%.6g,\"repeat\":%d,"
+                  "\"collisions\":%llu,\"wall_s\":%.4f,\"cpu_s\":%.4f,\"collisions_per_s\":%.1f,"
+                  "\"bytes_per_particle\":%.1f,\"cells_per_side\":%d,\"Z\":%.5f,"
+                  "\"crossings_per_collision\":%.3f,\"stale_per_collision\":%.3f,"
+                  "\"pairs_per_collision\":%.1f,\"scans_per_collision\":%.3f}",
+                  queue_name, std::string(Scan::name).c_str(), D, c.n, c.packing, r,
+                  static_cast<unsigned long long>(c.collisions), wall, cpu, rate,
+                  e.bytes_per_particle(), e.cells_per_side(), e.pressure_Z(),
+                  static_cast<double>(e.crossings() - x0) / per,
+                  static_cast<double>(e.stale_events() - s0) / per,
+                  static_cast<double>(e.pairs_tested() - p0) / per,
+                  static_cast<double>(e.scans() - n0) / per);
+    out << buf << std::endl;
+  }
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "{\"bench\":\"edmd\",\"stat\":\"median\",\"queue\":\"%s\",\"dim\":%d,"
+                "\"n\":%zu,\"packing\":%.6g,\"repeats\":%d,\"collisions_per_s\":%.1f}",
+                queue_name, D, c.n, c.packing, c.repeats, median(rates));
+  out << buf << std::endl;
+}
+
+}  // namespace
+
+std::vector<std::string_view> edmd_scan_names() { return registry::scan_names(); }
+
+void run_edmd_bench(const EdmdCase& c, std::ostream& out) {
+  registry::dispatch(
+      [&](auto dim, auto scan) {
+        constexpr int D = decltype(dim)::type::value;
+        edmd_case<D, registry::ScanFor<typename decltype(scan)::type, D>>(c, out);
+      },
+      registry::dimension(c.dim), registry::scan(c.scan));
+}
+
+std::vector<EdmdCase> default_edmd_cases() {
+  return {{3, 4000, 0.26}, {3, 32000, 0.26}, {3, 256000, 0.26}, {6, 32000, 0.05, 200000}};
+}
+
+}  // namespace hypergas::studies

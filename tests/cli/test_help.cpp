@@ -1,5 +1,5 @@
-// CLI tests: --help lists every option of the contract (DESIGN.md section 5) with its unit
-// or allowed values and its default, and exits 0.
+// CLI tests: --help lists every option of the command-line contract (docs/design.md) with
+// its unit or allowed values and its default, and exits 0.
 #include <catch2/catch.hpp>
 
 #ifdef HYPERGAS_CLI_PATH

@@ -1,5 +1,5 @@
 // CLI tests: happy paths of `hypergas run` and of the default scene. The files of the
-// contract (DESIGN.md section 5) exist with their columns, summary.json has its keys, --json
+// contract (docs/design.md) exist with their columns, summary.json has its keys, --json
 // prints the same object as the last stdout line, and an interrupted run leaves nothing.
 #include <catch2/catch.hpp>
 

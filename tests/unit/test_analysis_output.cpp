@@ -1,5 +1,5 @@
 // Atomic CSV / JSON output (analysis/output.hpp) and the files of MomentsRecorder
-// (DESIGN.md section 5). Deterministic.
+// (docs/design.md: the file contract). Deterministic.
 #include <catch2/catch.hpp>
 
 #include <unistd.h>
@@ -116,7 +116,7 @@ TEST_CASE("JSON summary: one object, keys in order, NaN as null", "[analysis]") 
   CHECK(read(dir.path / "summary.json") == to_json(o) + "\n");
 }
 
-TEST_CASE("MomentsRecorder writes moments.csv and speed_histogram.csv per DESIGN.md",
+TEST_CASE("MomentsRecorder writes moments.csv and speed_histogram.csv per docs/design.md",
           "[analysis]") {
   test::OwnedState st(3, 20000);
   Rng rng(51);

@@ -1,6 +1,7 @@
 // hypergas/analysis/moments_recorder.hpp -- an Observer that records the relaxation to MB.
 //
-// Per snapshot it records one row of moments.csv (DESIGN.md section 5). Columns, in order:
+// Per snapshot it records one row of moments.csv (the file contract of docs/design.md).
+// Columns, in order:
 //   time                     engine time (engine units)
 //   collisions_per_particle  2 * collisions / n
 //   m2, m4                   <|v|^2>, <|v|^4> over all particles (velocity^2, velocity^4)

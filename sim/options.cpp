@@ -1,11 +1,9 @@
 // sim/options.cpp -- option registration (with units and defaults in --help) and validation.
 #include "options.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <fmt/core.h>
 #include <fmt/ranges.h>
-#include <string_view>
 
 #include "hypergas/edmd/box.hpp"
 #include "hypergas/error.hpp"
@@ -36,14 +34,24 @@ std::vector<double> jamming_list() {
   return v;
 }
 
-bool is_one_of(const std::vector<std::string_view>& names, const std::string& s) {
-  return std::find(names.begin(), names.end(), s) != names.end();
+/// "dsmc delta, edmd maxwell": each engine's default initial state, for --help.
+std::string default_inits() {
+  std::string s;
+  for (const auto& e : registry::engines)
+    s += fmt::format("{}{} {}", s.empty() ? "" : ", ", e.name,
+                     registry::name(registry::default_initial_state(e.value)));
+  return s;
 }
 
-void check_model(const std::string& m) {
-  if (!is_one_of(registry::model_names(), m))
-    bad(fmt::format("unknown model '{}' (--model must be one of: {})", m,
-                    registry::join(registry::model_names(), ", ")));
+/// Checks `value` with the registry's lookup, which names the known values; the message
+/// is prefixed with the option.
+template <class Lookup>
+void check_name(const char* option, const std::string& value, Lookup lookup) {
+  try {
+    lookup(value);
+  } catch (const InvalidInput& e) {
+    bad(fmt::format("{}: {}", option, e.what()));
+  }
 }
 
 }  // namespace
@@ -75,13 +83,9 @@ void add_run_options(CLI::App& app, RunOptions& o) {
                  "VHS rate exponent a: pair rate ~ |g|^a, in [0, 1] (hs is 1, maxwell 0)")
       ->capture_default_str();
   app.add_option("--init", o.init,
-                 fmt::format("initial velocities: {} (default: {} {}, {} {}; see "
+                 fmt::format("initial velocities: {} (default: {}; see "
                              "include/hypergas/initial_state.hpp)",
-                             registry::describe(registry::initial_states),
-                             registry::name(registry::EngineKind::dsmc),
-                             registry::name(registry::default_initial_state(registry::EngineKind::dsmc)),
-                             registry::name(registry::EngineKind::edmd),
-                             registry::name(registry::default_initial_state(registry::EngineKind::edmd))));
+                             registry::describe(registry::initial_states), default_inits()));
   app.add_option("--until", o.until,
                  "end time; dsmc: equilibrium mean collision times (default 10); edmd: "
                  "sigma sqrt(m/kT) (default 20)");
@@ -131,13 +135,11 @@ void add_bench_options(CLI::App& app, BenchOptions& o) {
 }
 
 void validate(const RunOptions& o) {
-  if (!is_one_of(registry::engine_names(), o.engine))
-    bad(fmt::format("unknown engine '{}' (--engine must be one of: {})", o.engine,
-                    registry::join(registry::engine_names(), ", ")));
+  check_name("--engine", o.engine, registry::engine);
   check_dim(o.dim, "--dim");
   check_n(o.n);
   if (o.out.empty()) bad("--out must name an output folder");
-  check_model(o.model);
+  check_name("--model", o.model, registry::model);
   const registry::EngineKind e = o.engine_kind();
   const bool edmd = e == registry::EngineKind::edmd;
   if (edmd && o.model != dsmc::HardSpheres::name)
@@ -145,9 +147,7 @@ void validate(const RunOptions& o) {
                     o.model, registry::name(registry::EngineKind::dsmc)));
   if (!(std::isfinite(o.vhs_exponent) && o.vhs_exponent >= 0.0 && o.vhs_exponent <= 1.0))
     bad(fmt::format("--vhs-exponent must be in [0, 1], got {}", o.vhs_exponent));
-  if (!o.init.empty() && !is_one_of(registry::initial_state_names(), o.init))
-    bad(fmt::format("unknown initial state '{}' (known: {})", o.init,
-                    registry::join(registry::initial_state_names(), ", ")));
+  if (!o.init.empty()) check_name("--init", o.init, registry::initial_state);
   if (o.until >= 0.0 || std::isnan(o.until))
     if (!finite_positive(o.until))
       bad(fmt::format("--until must be a finite time > 0, got {}", o.until));
@@ -176,14 +176,12 @@ void validate(const RunOptions& o) {
 }
 
 void validate(const BenchOptions& o) {
-  if (o.engine != "all" && !is_one_of(registry::engine_names(), o.engine))
-    bad(fmt::format("unknown engine '{}' (--engine must be one of: {}, all)", o.engine,
-                    registry::join(registry::engine_names(), ", ")));
+  if (o.engine != "all") check_name("--engine (or all)", o.engine, registry::engine);
   if (o.dims.empty()) bad("--dim needs at least one dimension");
   for (int d : o.dims) check_dim(d, "--dim");
   if (o.ns.empty()) bad("--n needs at least one particle number");
   for (long long n : o.ns) check_n(n);
-  check_model(o.model);
+  check_name("--model", o.model, registry::model);
   if (!finite_positive(o.packing))
     bad(fmt::format("--packing must be a finite fraction > 0, got {}", o.packing));
   for (int d : o.dims)

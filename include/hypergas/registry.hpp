@@ -2,8 +2,8 @@
 // dispatch that turns runtime choices into template arguments.
 //
 // Compile-time choices are type lists: the dimensions 1..6, the DSMC collision models, the
-// EDMD neighbour scans, the feature "two species". Runtime choices are tables of named entries: the engines, the DSMC
-// time schemes and the initial states. Names, help texts and validation messages of the
+// EDMD neighbour scans, the feature "two species". Runtime choices are tables of named
+// entries: the engines, the DSMC time schemes and the initial states. Names, help texts and validation messages of the
 // command, the studies, the benchmarks and the bindings all come from here.
 //
 //   registry::dispatch(
@@ -230,7 +230,7 @@ Choice<List> choose(std::string_view name, std::string_view what) {
 
 /// The collision model named `name`; throws InvalidInput naming the known models.
 inline Choice<Models> model(std::string_view name) {
-  return choose<Models>(name, "collision model");
+  return choose<Models>(name, "model");
 }
 
 /// The EDMD neighbour scan named `name` ("auto" or a policy's name); throws InvalidInput.

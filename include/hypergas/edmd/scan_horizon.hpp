@@ -25,20 +25,16 @@
 #include <vector>
 
 #include "hypergas/edmd/prediction.hpp"
+#include "hypergas/edmd/scan_slab.hpp"
 #include "hypergas/edmd/state.hpp"
 
 namespace hypergas::edmd {
 
 /// The horizon scan (see the file comment).
 template <int D, Features F>
-class HorizonScanner {
+class HorizonScanner : public StatelessScanner<D, F> {
  public:
-  static constexpr double cells_per_particle = 2.0;
   static constexpr bool keeps_pairs_on_crossing = false;
-  void rebuilt(State<D, F>&) {}
-  void left_cell(State<D, F>&, std::uint32_t) {}
-  void permute(const std::vector<std::uint32_t>&) {}
-  double bytes_per_particle(const State<D, F>&) const { return 0.0; }
 
   /// Predicts i's crossing and its pair events from the stencil cells near its path.
   void scan(ScanState<D, F>& s, std::uint32_t i, int, int, Top2, double sc) {

@@ -25,16 +25,22 @@
 
 namespace hypergas::edmd {
 
-/// The slab scan (see the file comment).
+/// The hooks of a scan policy that keeps no data of its own (slab and horizon scans): a
+/// grid of at most 2 cells per particle, nothing to update, permute or count.
 template <int D, Features F>
-class SlabScanner {
- public:
+struct StatelessScanner {
   static constexpr double cells_per_particle = 2.0;
-  static constexpr bool keeps_pairs_on_crossing = true;
   void rebuilt(State<D, F>&) {}
   void left_cell(State<D, F>&, std::uint32_t) {}
   void permute(const std::vector<std::uint32_t>&) {}
   double bytes_per_particle(const State<D, F>&) const { return 0.0; }
+};
+
+/// The slab scan (see the file comment).
+template <int D, Features F>
+class SlabScanner : public StatelessScanner<D, F> {
+ public:
+  static constexpr bool keeps_pairs_on_crossing = true;
 
   /// Scans the neighbour cells of i (all, or the slab `dir` along `axis`), keeping the
   /// earliest pair events if they beat `top` (relative times); then predicts the crossing.

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "hypergas/checkpoint.hpp"
 #include "options.hpp"
 
 namespace hypergas::cli {
@@ -20,8 +21,19 @@ struct SceneOptions {
 /// `hypergas`: relaxes a non-equilibrium gas in every D = 1..6, prints one table row per
 /// D, writes CSV and PNG plots. Returns the exit code.
 int default_scene(const SceneOptions& o);
-/// `hypergas run`: one simulation, files into --out. Returns the exit code.
-int run_command(const RunOptions& o);
+/// `hypergas run`: one simulation, files into --out (checkpoints there too). With `resume`,
+/// continues the checkpoint it reads (positioned after its header). Returns the exit code.
+int run_command(const RunOptions& o, checkpoint::Reader* resume = nullptr);
+
+/// Options of `hypergas resume`.
+struct ResumeOptions {
+  std::string dir;    ///< the output folder of the stopped run
+  bool json = false;  ///< print the summary as JSON, as `run --json`
+};
+/// Registers `hypergas resume` on `app`, writing into `o`; returns the subcommand.
+CLI::App* add_resume_command(CLI::App& app, ResumeOptions& o);
+/// `hypergas resume DIR`: continues the run whose checkpoint DIR holds. Returns the exit code.
+int resume_command(const ResumeOptions& o);
 /// `hypergas bench`: throughput, one JSON object per line on stdout. Returns the exit code.
 int bench_command(const BenchOptions& o);
 

@@ -96,7 +96,7 @@ int default_scene(const SceneOptions& s) {
   auto work = [&] {
     for (std::size_t k; (k = next++) < dims.size();) {
       try {
-        records[k] = simulate_dsmc(scene_run(s, dims[k]), false);
+        records[k] = simulate(scene_run(s, dims[k]), false);
       } catch (...) {
         std::lock_guard lock(error_mutex);
         if (!error) error = std::current_exception();

@@ -13,6 +13,7 @@
 #include "hypergas/analysis/output.hpp"
 #include "hypergas/analysis/vacf_recorder.hpp"
 #include "options.hpp"
+#include "run_driver.hpp"
 
 namespace hypergas::cli {
 
@@ -23,17 +24,26 @@ struct RunRecord {
   analysis::JsonObject summary;  ///< summary.json: the contract's keys first, then extras
 };
 
+/// Checkpoints of a run: where they go (none by default) and, for `hypergas resume`, the
+/// checkpoint to continue from, read up to the end of its header (save_header).
+struct RunContext {
+  Checkpointer checkpoints;
+  checkpoint::Reader* resume = nullptr;
+};
+
 /// Runs the engine `o` names (options already validated); progress bar on stderr if
 /// `progress` and stderr is a terminal. Throws InvalidInput for parameters the engine
-/// rejects and Interrupted after SIGINT/SIGTERM.
+/// rejects (or a checkpoint that does not fit), and InterruptedWithCheckpoint or Interrupted
+/// after SIGINT/SIGTERM.
+RunRecord simulate(const RunOptions& o, bool progress, RunContext& ctx);
 RunRecord simulate(const RunOptions& o, bool progress);
 
 /// DSMC (time in equilibrium mean collision times), default until 10.
-RunRecord simulate_dsmc(const RunOptions& o, bool progress);
+RunRecord simulate_dsmc(const RunOptions& o, bool progress, RunContext& ctx);
 
 /// EDMD (sigma = m = kT = 1), default until 20. The first fifth of [0, until] equilibrates
 /// the lattice start without sampling; moments, VACF, Z and rates come from the rest.
-RunRecord simulate_edmd(const RunOptions& o, bool progress);
+RunRecord simulate_edmd(const RunOptions& o, bool progress, RunContext& ctx);
 
 /// The sampling interval actually used: `every` shrunk so that `span` is a whole number
 /// of intervals (span / 50 when every <= 0).

@@ -1,8 +1,13 @@
 // sim/options.cpp -- option registration (with units and defaults in --help) and validation.
 #include "options.hpp"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <limits>
+#include <type_traits>
 #include <fmt/core.h>
+#include <unistd.h>
 #include <fmt/ranges.h>
 
 #include "hypergas/edmd/box.hpp"
@@ -56,9 +61,133 @@ void check_name(const char* option, const std::string& value, Lookup lookup) {
 
 }  // namespace
 
+namespace {
+/// Refuses a particle number whose state would not fit in this machine's memory.
+void check_memory(long long n, int dim, bool edmd) {
+  // Bytes per particle, a lower estimate: DSMC the padded velocities and a species byte;
+  // EDMD the [position, clock, velocity] record plus ~150 B of events, cells and calendar.
+  const double per = edmd ? 8.0 * hypergas::detail::record_stride(dim) + 150.0
+                          : 8.0 * hypergas::detail::padded_stride(dim) + 1.0;
+  const double need = per * static_cast<double>(n);
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page <= 0) return;
+  const double have = static_cast<double>(pages) * static_cast<double>(page);
+  if (need > have)
+    bad(fmt::format("--n {} needs about {:.3g} GB of memory for the {} state; this machine has "
+                    "{:.3g} GB",
+                    n, need / 1e9, edmd ? "edmd" : "dsmc", have / 1e9));
+}
+}  // namespace
+
+template <class T>
+T parse_number(const std::string& option, const std::string& text) {
+  const char* b = text.data();
+  const char* e = b + text.size();
+  const auto fail = [&](const char* what) -> T {
+    throw CLI::ValidationError(fmt::format("{} must be {}, got '{}'", option, what, text));
+  };
+  if constexpr (std::is_floating_point_v<T>) {
+    T x{};
+    const auto r = std::from_chars(b, e, x);
+    if (r.ec == std::errc::result_out_of_range) return fail("a number within double range");
+    if (text.empty() || r.ec != std::errc{} || r.ptr != e) return fail("a number");
+    return x;
+  } else {
+    T x{};
+    const auto r = std::from_chars(b, e, x);
+    if (!text.empty() && r.ec == std::errc{} && r.ptr == e) return x;
+    const char* what = std::is_signed_v<T> ? "an integer" : "an integer >= 0 (decimal digits)";
+    if constexpr (std::is_signed_v<T>) {  // 1e6, 2.5e3: exact integers in scientific form
+      double d = 0.0;
+      const auto rd = std::from_chars(b, e, d);
+      if (!text.empty() && rd.ec == std::errc{} && rd.ptr == e && std::isfinite(d) &&
+          d == std::floor(d) && std::fabs(d) < 9.0e18)
+        if (d >= static_cast<double>(std::numeric_limits<T>::min()) &&
+            d <= static_cast<double>(std::numeric_limits<T>::max()))
+          return static_cast<T>(d);
+    }
+    if (r.ec == std::errc::result_out_of_range)
+      return fail(std::is_signed_v<T> ? "an integer of a sensible size" : "below 2^64");
+    return fail(what);
+  }
+}
+
+template <class T>
+CLI::Option* add_number(CLI::App& app, const std::string& names, T& target,
+                        const std::string& help) {
+  const std::string name = "--" + names.substr(2, names.find(',') - 2);
+  CLI::Option* opt = nullptr;
+  if constexpr (requires { typename T::value_type; }) {
+    using E = typename T::value_type;
+    opt = app.add_option_function<std::vector<std::string>>(
+        names,
+        [&target, name](const std::vector<std::string>& v) {
+          target.clear();
+          for (const std::string& s : v) target.push_back(parse_number<E>(name, s));
+        },
+        help);
+    opt->default_str(fmt::format("{}", fmt::join(target, " ")));
+  } else {
+    opt = app.add_option_function<std::string>(
+        names, [&target, name](const std::string& s) { target = parse_number<T>(name, s); },
+        help);
+    opt->default_str(fmt::format("{}", target));
+  }
+  using E = std::conditional_t<requires { typename T::value_type; }, T, std::vector<T>>;
+  using V = typename E::value_type;
+  opt->type_name(std::is_floating_point_v<V> ? "NUM" : std::is_signed_v<V> ? "INT" : "UINT");
+  return opt;
+}
+
+template double parse_number<double>(const std::string&, const std::string&);
+template int parse_number<int>(const std::string&, const std::string&);
+template long long parse_number<long long>(const std::string&, const std::string&);
+template std::uint64_t parse_number<std::uint64_t>(const std::string&, const std::string&);
+template CLI::Option* add_number<double>(CLI::App&, const std::string&, double&,
+                                         const std::string&);
+template CLI::Option* add_number<int>(CLI::App&, const std::string&, int&, const std::string&);
+template CLI::Option* add_number<long long>(CLI::App&, const std::string&, long long&,
+                                            const std::string&);
+template CLI::Option* add_number<std::uint64_t>(CLI::App&, const std::string&, std::uint64_t&,
+                                                const std::string&);
+
 double jamming_packing(int dim) {
   check_dim(dim, "dimension");
   return edmd::jamming_packing(dim);  // sources in include/hypergas/edmd/box.hpp
+}
+
+bool RunOptions::was_given(const std::string& name) const {
+  return std::find(given.begin(), given.end(), name) != given.end();
+}
+
+double RunOptions::checkpoint_wall_seconds() const {
+  return checkpoint_wall.empty() ? 0.0 : parse_duration("--checkpoint-wall", checkpoint_wall);
+}
+
+void record_given(const CLI::App& app, RunOptions& o) {
+  o.given.clear();
+  for (const CLI::Option* opt : app.get_options())
+    if (opt->count() > 0 && !opt->get_lnames().empty())
+      o.given.push_back("--" + opt->get_lnames().front());
+}
+
+double parse_duration(const std::string& option, const std::string& text) {
+  std::size_t pos = 0;
+  double x = 0.0;
+  try {
+    x = std::stod(text, &pos);
+  } catch (const std::exception&) {
+    bad(fmt::format("{} must be a duration such as 90s, 10min or 2h, got '{}'", option, text));
+  }
+  const std::string unit = text.substr(pos);
+  double f = 0.0;
+  if (unit.empty() || unit == "s") f = 1.0;
+  else if (unit == "min" || unit == "m") f = 60.0;
+  else if (unit == "h") f = 3600.0;
+  else bad(fmt::format("{}: unknown unit '{}' in '{}' (use s, min or h)", option, unit, text));
+  if (!(std::isfinite(x) && x > 0.0 && x * f <= 1e9))
+    bad(fmt::format("{} must be a duration > 0 and at most 1e9 s, got '{}'", option, text));
+  return x * f;
 }
 
 registry::EngineKind RunOptions::engine_kind() const { return registry::engine(engine); }
@@ -71,67 +200,71 @@ InitialState RunOptions::initial_state() const {
 void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--engine", o.engine, registry::describe(registry::engines))
       ->capture_default_str();
-  app.add_option("--dim,-d", o.dim, "dimension D, 1..6")->capture_default_str();
-  app.add_option("--n,-n", o.n, "number of particles, >= 2")->capture_default_str();
+  add_number(app, "--dim,-d", o.dim, "dimension D, 1..6");
+  add_number(app, "--n,-n", o.n, "number of particles, >= 2 (1e6 is read as 1000000)");
   app.add_option("--out,-o", o.out,
                  "output folder (created if missing); files appear only when complete")
       ->required();
   app.add_flag("--json", o.json, "print the summary as one JSON object, the last stdout line");
   app.add_option("--model", o.model, "DSMC collision model: " + registry::describe_models())
       ->capture_default_str();
-  app.add_option("--vhs-exponent", o.vhs_exponent,
-                 "VHS rate exponent a: pair rate ~ |g|^a, in [0, 1] (hs is 1, maxwell 0)")
-      ->capture_default_str();
+  add_number(app, "--vhs-exponent", o.vhs_exponent,
+                 "VHS rate exponent a: pair rate ~ |g|^a, in [0, 1] (hs is 1, maxwell 0)");
   app.add_option("--init", o.init,
                  fmt::format("initial velocities: {} (default: {}; see "
                              "include/hypergas/initial_state.hpp)",
                              registry::describe(registry::initial_states), default_inits()));
-  app.add_option("--until", o.until,
+  add_number(app, "--until", o.until,
                  "end time; dsmc: equilibrium mean collision times (default 10); edmd: "
-                 "sigma sqrt(m/kT) (default 20)");
-  app.add_option("--every", o.every, "sampling interval, same unit as --until (default until/50)");
-  app.add_option("--packing", o.packing,
+                 "sigma sqrt(m/kT) (default 20)")
+      ->default_str("");
+  add_number(app, "--every", o.every, "sampling interval, same unit as --until (default until/50)")
+      ->default_str("");
+  add_number(app, "--packing", o.packing,
                  fmt::format("edmd packing fraction eta (volume of the spheres / box volume), "
                              "below the D-dimensional jamming density ({} for D = 1..6)",
-                             fmt::join(jamming_list(), ", ")))
-      ->capture_default_str();
-  app.add_option("--mass-ratio", o.mass_ratio,
+                             fmt::join(jamming_list(), ", ")));
+  add_number(app, "--mass-ratio", o.mass_ratio,
                  "m2/m1 of a two-mass gas, finite and > 0 (1 = one species; use != 1 in D = 1)")
       ->capture_default_str();
-  app.add_option("--fraction", o.fraction, "number fraction of species 2 (mass m2), in [0, 1]")
-      ->capture_default_str();
-  app.add_option("--temperature", o.temperature,
+  add_number(app, "--fraction", o.fraction, "number fraction of species 2 (mass m2), in [0, 1]");
+  add_number(app, "--temperature", o.temperature,
                  "initial kT in units of m1 v0^2 (dsmc; edmd fixes kT = 1), finite and > 0")
       ->capture_default_str();
-  app.add_option("--seed", o.seed, "random seed (any 64-bit integer)")->capture_default_str();
-  app.add_option("--threads,-j", o.threads,
+  add_number(app, "--seed", o.seed, "random seed, an integer in 0..2^64-1");
+  add_number(app, "--threads,-j", o.threads,
                  "dsmc: run K independent replicas on K threads (files from replica 0, which "
                  "keeps --seed; summary adds totals and replica error bars); edmd: 1")
       ->capture_default_str();
+  add_number(app, "--checkpoint-every", o.checkpoint_every,
+                 "write OUT/checkpoint.hgck at the first sampling time after every T time "
+                 "units (same unit as --until); continue a stopped run with `hypergas resume "
+                 "OUT`. Ctrl-C always writes one and stops")
+      ->default_str("");
+  app.add_option("--checkpoint-wall", o.checkpoint_wall,
+                 "also write a checkpoint after this much wall time, e.g. 90s, 10min, 2h");
+  app.footer(
+      "Options of the other engine are refused: --packing is edmd only; --model, "
+      "--vhs-exponent (with --model vhs), --temperature and --threads are dsmc only.");
 }
 
 void add_bench_options(CLI::App& app, BenchOptions& o) {
   app.add_option("--engine", o.engine,
                  fmt::format("{} | all", registry::join(registry::engine_names(), " | ")))
       ->capture_default_str();
-  app.add_option("--dim,-d", o.dims, "dimensions to measure, each in 1..6 (repeatable)")
-      ->capture_default_str();
-  app.add_option("--n,-n", o.ns, "particle numbers to measure, each >= 2 (repeatable)")
-      ->capture_default_str();
+  add_number(app, "--dim,-d", o.dims, "dimensions to measure, each in 1..6 (repeatable)");
+  add_number(app, "--n,-n", o.ns, "particle numbers to measure, each >= 2 (repeatable)");
   app.add_option("--model", o.model,
                  "DSMC collision model: " + registry::join(registry::model_names(), " | "))
       ->capture_default_str();
-  app.add_option("--packing", o.packing, "EDMD packing fraction eta")->capture_default_str();
-  app.add_option("--reps", o.reps, "timed runs per point, the median is reported, 1..100")
-      ->capture_default_str();
-  app.add_option("--min-collisions", o.min_collisions,
-                 "accepted collisions per timed run, >= 1000")
-      ->capture_default_str();
-  app.add_option("--threads,-j", o.threads,
+  add_number(app, "--packing", o.packing, "EDMD packing fraction eta");
+  add_number(app, "--reps", o.reps, "timed runs per point, the median is reported, 1..100");
+  add_number(app, "--min-collisions", o.min_collisions,
+                 "accepted collisions per timed run, >= 1000");
+  add_number(app, "--threads,-j", o.threads,
                  "dsmc: > 1 adds a line with the aggregate rate of that many concurrent "
-                 "independent replicas, 1..64")
-      ->capture_default_str();
-  app.add_option("--seed", o.seed, "random seed")->capture_default_str();
+                 "independent replicas, 1..64");
+  add_number(app, "--seed", o.seed, "random seed");
 }
 
 void validate(const RunOptions& o) {
@@ -142,18 +275,34 @@ void validate(const RunOptions& o) {
   check_name("--model", o.model, registry::model);
   const registry::EngineKind e = o.engine_kind();
   const bool edmd = e == registry::EngineKind::edmd;
-  if (edmd && o.model != dsmc::HardSpheres::name)
-    bad(fmt::format("--model {} needs --engine {}: event-driven MD simulates hard spheres",
-                    o.model, registry::name(registry::EngineKind::dsmc)));
   if (!(std::isfinite(o.vhs_exponent) && o.vhs_exponent >= 0.0 && o.vhs_exponent <= 1.0))
     bad(fmt::format("--vhs-exponent must be in [0, 1], got {}", o.vhs_exponent));
   if (!o.init.empty()) check_name("--init", o.init, registry::initial_state);
-  if (o.until >= 0.0 || std::isnan(o.until))
-    if (!finite_positive(o.until))
-      bad(fmt::format("--until must be a finite time > 0, got {}", o.until));
-  if (o.every >= 0.0 || std::isnan(o.every))
-    if (!finite_positive(o.every))
-      bad(fmt::format("--every must be a finite interval > 0, got {}", o.every));
+  const char* other = edmd ? "dsmc" : "edmd";
+  for (const char* opt : edmd ? std::vector<const char*>{"--model", "--vhs-exponent",
+                                                         "--temperature", "--threads"}
+                              : std::vector<const char*>{"--packing"})
+    if (o.was_given(opt))
+      bad(fmt::format("{} applies to --engine {} only, not to --engine {}", opt, other,
+                      o.engine));
+  if (o.was_given("--vhs-exponent") && o.model != dsmc::VariableHardSpheres::name)
+    bad(fmt::format("--vhs-exponent applies to --model {} only, not to --model {}",
+                    dsmc::VariableHardSpheres::name, o.model));
+  if (o.was_given("--until") && !finite_positive(o.until))
+    bad(fmt::format("--until must be a finite time > 0, got {}", o.until));
+  if (o.was_given("--every") && !finite_positive(o.every))
+    bad(fmt::format("--every must be a finite interval > 0, got {}", o.every));
+  const double until = o.was_given("--until") ? o.until : (edmd ? 20.0 : 10.0);
+  if (until > 1e12) bad(fmt::format("--until must be at most 1e12, got {}", until));
+  if (o.was_given("--every") && until / o.every > 1e6)
+    bad(fmt::format("--until / --every = {:.3g} samples; at most 1e6 (each is a row of "
+                    "moments.csv)",
+                    until / o.every));
+  if (o.was_given("--checkpoint-every") && !finite_positive(o.checkpoint_every))
+    bad(fmt::format("--checkpoint-every must be a finite time > 0, got {}", o.checkpoint_every));
+  if (!o.checkpoint_wall.empty()) (void)parse_duration("--checkpoint-wall", o.checkpoint_wall);
+  if ((o.checkpoint_every > 0.0 || !o.checkpoint_wall.empty()) && o.threads != 1)
+    bad("--checkpoint-every and --checkpoint-wall need --threads 1 (one system)");
   if (!finite_positive(o.packing))
     bad(fmt::format("--packing must be a finite fraction > 0, got {}", o.packing));
   const double jam = jamming_packing(o.dim);
@@ -167,12 +316,9 @@ void validate(const RunOptions& o) {
     bad(fmt::format("--fraction must be in [0, 1], got {}", o.fraction));
   if (!finite_positive(o.temperature))
     bad(fmt::format("--temperature must be a finite kT > 0, got {}", o.temperature));
-  if (edmd && o.temperature != 1.0)
-    bad("--temperature applies to --engine dsmc only (edmd units fix kT = 1)");
   if (o.threads < 1 || o.threads > 64)
     bad(fmt::format("--threads must be in 1..64, got {}", o.threads));
-  if (edmd && o.threads != 1)
-    bad("--threads applies to --engine dsmc only (the EDMD engine is sequential)");
+  check_memory(o.n, o.dim, edmd);
 }
 
 void validate(const BenchOptions& o) {

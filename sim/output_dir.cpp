@@ -5,6 +5,8 @@
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <fmt/core.h>
@@ -16,6 +18,26 @@ namespace fs = std::filesystem;
 namespace hypergas::cli {
 
 namespace {
+/// The lock file inside a staging folder: its owner holds an exclusive flock on it for as
+/// long as it runs, and the kernel releases the lock when the owner dies, however it dies.
+constexpr const char* lock_name = ".lock";
+
+/// Removes the staging folders whose owner no longer runs (a run killed with SIGKILL cannot
+/// clean up; its checkpoint, if any, is in the output folder itself).
+void remove_stale_staging(const fs::path& dir) {
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    if (e.path().filename().string().rfind(".hypergas-staging-", 0) != 0) continue;
+    const int fd = ::open((e.path() / lock_name).c_str(), O_RDWR | O_CLOEXEC);
+    if (fd >= 0 && ::flock(fd, LOCK_EX | LOCK_NB) != 0) {  // its owner runs
+      ::close(fd);
+      continue;
+    }
+    fs::remove_all(e.path(), ec);
+    if (fd >= 0) ::close(fd);
+  }
+}
+
 [[noreturn]] void unwritable(const fs::path& dir, const std::string& why) {
   throw InvalidInput(fmt::format("output folder '{}' is not writable: {}", dir.string(), why));
 }
@@ -41,9 +63,14 @@ OutputDir::OutputDir(fs::path dir) : dir_(std::move(dir)) {
     created_.push_back(p);
   }
   if (!fs::is_directory(dir_, ec)) unwritable(dir_, "it exists and is not a folder");
+  remove_stale_staging(dir_);
   staging_ = dir_ / fmt::format(".hypergas-staging-{}", ::getpid());
   fs::remove_all(staging_, ec);
-  if (!fs::create_directory(staging_, ec) || ec || ::access(staging_.c_str(), W_OK) != 0) {
+  if (fs::create_directory(staging_, ec) && !ec) {
+    lock_fd_ = ::open((staging_ / lock_name).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (lock_fd_ >= 0) ::flock(lock_fd_, LOCK_EX | LOCK_NB);
+  }
+  if (lock_fd_ < 0 || ec || ::access(staging_.c_str(), W_OK) != 0) {
     fs::remove_all(staging_, ec);
     for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, ec);
     created_.clear();
@@ -53,6 +80,7 @@ OutputDir::OutputDir(fs::path dir) : dir_(std::move(dir)) {
 
 OutputDir::~OutputDir() {
   std::error_code ec;
+  if (lock_fd_ >= 0) ::close(lock_fd_);
   fs::remove_all(staging_, ec);
   if (done_) return;
   // Remove created folders innermost first, and only if still empty (never a user's file).
@@ -72,7 +100,7 @@ void OutputDir::write(std::string_view name, std::string_view content) {
 void OutputDir::commit() {
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(staging_))
-    if (e.is_regular_file()) files.push_back(e.path());
+    if (e.is_regular_file() && e.path().filename() != lock_name) files.push_back(e.path());
   std::sort(files.begin(), files.end());
   committed_.clear();
   for (const fs::path& p : files) {

@@ -16,7 +16,8 @@ namespace hypergas::cli {
 class OutputDir {
  public:
   /// Creates `dir` (and missing parents), checks that files can be created in it and makes
-  /// the staging folder. Throws InvalidInput naming the folder and the reason otherwise.
+  /// the staging folder (removing those left by processes that no longer run). Throws
+  /// InvalidInput naming the folder and the reason otherwise.
   explicit OutputDir(std::filesystem::path dir);
   OutputDir(const OutputDir&) = delete;
   OutputDir& operator=(const OutputDir&) = delete;
@@ -41,6 +42,7 @@ class OutputDir {
   std::vector<std::filesystem::path> created_;  // folders we made, outermost first
   std::vector<std::string> committed_;
   bool done_ = false;
+  int lock_fd_ = -1;  // flock held on staging_/.lock while this object lives
 };
 
 }  // namespace hypergas::cli

@@ -21,9 +21,8 @@ CLI::App* add_report_command(CLI::App& app) {
   auto& o = report_options;
   r->add_option("--out,-o", o.out, "output folder (created if missing)")->capture_default_str();
   r->add_flag("--quick", o.quick, "about 20 s instead of about 5 min: fewer points and replicas");
-  r->add_option("--seed", o.seed, "random seed")->capture_default_str();
-  r->add_option("--threads,-j", o.threads, "replicas run on this many threads, 1..64")
-      ->capture_default_str();
+  add_number(*r, "--seed", o.seed, "random seed");
+  add_number(*r, "--threads,-j", o.threads, "replicas run on this many threads, 1..64");
   r->add_flag("--no-plot{false}", o.plot, "skip the PNG (gnuplot)");
   return r;
 }

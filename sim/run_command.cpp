@@ -3,7 +3,11 @@
 // Order of work: the options are already validated; the output folder is prepared (created,
 // checked writable, staging folder made); the engine runs and the recorders write CSV into
 // staging; summary.json and the PNG plots follow; only then are the files moved into
-// place. Any exception before the commit leaves the folder as it was.
+// place. Any exception before the commit leaves the folder as it was, except for the
+// checkpoint (checkpoint.hgck, written atomically during the run), which a finished run
+// removes.
+#include <filesystem>
+
 #include <fmt/core.h>
 
 #include "commands.hpp"
@@ -16,10 +20,14 @@
 namespace hypergas::cli {
 
 
-int run_command(const RunOptions& o) {
+int run_command(const RunOptions& o, checkpoint::Reader* resume) {
   OutputDir out(o.out);
   const bool edmd = o.engine_kind() == registry::EngineKind::edmd;
-  const RunRecord rec = simulate(o, true);
+  RunContext ctx;
+  if (o.threads == 1)
+    ctx.checkpoints = Checkpointer(out.dir(), o.checkpoint_every, o.checkpoint_wall_seconds());
+  ctx.resume = resume;
+  const RunRecord rec = simulate(o, true, ctx);
   const analysis::JsonObject& summary = rec.summary;
   rec.moments.write_moments_csv(out.staged("moments.csv").string());
   rec.moments.write_speed_histogram_csv(out.staged("speed_histogram.csv").string());
@@ -27,6 +35,9 @@ int run_command(const RunOptions& o) {
   analysis::write_json(out.staged("summary.json").string(), summary);
   studies::run_gnuplot(run_plot_script(rec.vacf && rec.vacf->frames() >= 2), out.staging());
   out.commit();
+  // The run is complete: its checkpoint would only continue a finished run.
+  std::error_code ec;
+  std::filesystem::remove(out.dir() / Checkpointer::file_name, ec);
 
   const auto f = [&](const char* k) { return summary_field(summary, k); };
   fmt::print("{} D={} model={} n={} seed={}: {} collisions in {} s ({} collisions/s)\n",

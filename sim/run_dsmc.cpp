@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <variant>
 
 #include <fmt/core.h>
@@ -15,6 +16,7 @@
 #include "hypergas/registry.hpp"
 #include "hypergas/studies/replicas.hpp"
 #include "hypergas/studies/statistics.hpp"
+#include "run_driver.hpp"
 #include "run_observer.hpp"
 
 namespace hypergas::cli {
@@ -25,9 +27,14 @@ double sampling_interval(double span, double every) {
   return span / k;
 }
 
+RunRecord simulate(const RunOptions& o, bool progress, RunContext& ctx) {
+  if (o.engine_kind() == registry::EngineKind::edmd) return simulate_edmd(o, progress, ctx);
+  return simulate_dsmc(o, progress, ctx);
+}
+
 RunRecord simulate(const RunOptions& o, bool progress) {
-  if (o.engine_kind() == registry::EngineKind::edmd) return simulate_edmd(o, progress);
-  return simulate_dsmc(o, progress);
+  RunContext none;
+  return simulate(o, progress, none);
 }
 
 std::string summary_field(const analysis::JsonObject& o, const std::string& key) {
@@ -37,7 +44,8 @@ std::string summary_field(const analysis::JsonObject& o, const std::string& key)
           [](const auto& x) -> std::string {
             using T = std::decay_t<decltype(x)>;
             if constexpr (std::is_same_v<T, std::string>) return x;
-            else if constexpr (std::is_same_v<T, double>) return fmt::format("{:.4g}", x);
+            else if constexpr (std::is_same_v<T, double>)
+              return std::isfinite(x) ? fmt::format("{:.4g}", x) : std::string("-");
             else return fmt::format("{}", x);
           },
           v);
@@ -55,37 +63,65 @@ double summary_number(const analysis::JsonObject& o, const std::string& key) {
 
 namespace {
 
-/// Runs `threads` independent replicas (studies/replicas.hpp: replica 0 keeps the seed, so its
-/// files equal those of a one-thread run). The files come from replica 0; the summary adds
-/// totals, the aggregate rate and the replica mean of the final kurtosis with its error.
+/// Runs one system (threads = 1: checkpoints and resume through ctx) or `threads` independent
+/// replicas (studies/replicas.hpp: replica 0 keeps the seed, so its files equal those of a
+/// one-thread run). The files come from replica 0; the summary adds totals, the aggregate
+/// rate and the replica mean of the final kurtosis with its error.
 template <int D, class Model, bool Species>
-RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress) {
+RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunContext& ctx) {
   constexpr Features F{.species = Species};
   using Engine = dsmc::Engine<D, Model, F>;
   static_assert(SimulationEngine<Engine>);
   using Clock = std::chrono::steady_clock;
   const double until = o.until > 0.0 ? o.until : 10.0;
   const double every = sampling_interval(until, o.every);
+  const RunPlan plan{.until = until, .every = every, .t0 = 0.0, .warmup_stops = 0,
+                     .clamp_last = true};
   const int k = o.threads;
 
   std::vector<RunRecord> recs(static_cast<std::size_t>(k));
   std::vector<double> engine_s(k), rate(k), drift_e(k), drift_p(k), cpp(k);
   std::vector<std::int64_t> coll(k);
+  DriverState st0;
+  double engine_bpp = 0.0;
   const auto t0 = Clock::now();
-  studies::run_replicas<Engine>(cfg, k, k, [&](int r, Engine& engine) {
-    const auto c0 = conserved(engine.particles());
+  const auto body = [&](int r, Engine& engine, DriverState& st, const Conserved<D>& c0,
+                        Checkpointer& ck) {
     RunObserver obs({&recs[r].moments}, "dsmc", until, progress && r == 0);
-    const auto t1 = Clock::now();
-    engine.run_until(until, &obs, every);
-    engine_s[r] =
-        std::chrono::duration<double>(Clock::now() - t1).count() - obs.analysis_seconds();
+    const auto save = [&](checkpoint::Writer& w) {
+      save_header(w, o);
+      w(st, c0, recs[r].moments, engine);
+    };
+    drive(engine, plan, st, obs, ck, save);
     const auto c1 = conserved(engine.particles());
+    engine_s[r] = st.engine_s;
     coll[r] = static_cast<std::int64_t>(engine.collisions());
     rate[r] = engine_s[r] > 0.0 ? static_cast<double>(coll[r]) / engine_s[r] : 0.0;
     drift_e[r] = energy_rel_drift(c0, c1);
     drift_p[r] = momentum_drift(c0, c1);
     cpp[r] = engine.collisions_per_particle();
-  });
+    if (r == 0) engine_bpp = engine.bytes_per_particle();
+  };
+  if (k == 1) {
+    std::optional<Engine> engine;
+    Conserved<D> c0;
+    if (ctx.resume) {
+      (*ctx.resume)(st0, c0, recs[0].moments);
+      engine.emplace(cfg, *ctx.resume);
+      ctx.resume->finish();
+      ++st0.resumes;
+    } else {
+      engine.emplace(cfg);
+      c0 = conserved(engine->particles());
+    }
+    body(0, *engine, st0, c0, ctx.checkpoints);
+  } else {
+    studies::run_replicas<Engine>(cfg, k, k, [&](int r, Engine& engine) {
+      DriverState st;
+      Checkpointer none;
+      body(r, engine, r == 0 ? st0 : st, conserved(engine.particles()), none);
+    });
+  }
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
 
   RunRecord rec = std::move(recs[0]);
@@ -124,13 +160,19 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress) {
       {"chi2_p_speed", last("chi2_p_speed")},
       {"kurtosis_x_replica_mean", kurt_mean},
       {"kurtosis_x_replica_se", kurt_se},
+      {"engine_s", st0.engine_s},
+      {"analysis_s", st0.analysis_s},
+      {"engine_bytes_per_particle", engine_bpp},
+      {"peak_rss_bytes_per_particle", peak_rss_bytes() / static_cast<double>(o.n)},
+      {"checkpoints", static_cast<std::int64_t>(st0.checkpoints)},
+      {"resumes", static_cast<std::int64_t>(st0.resumes)},
   };
   return rec;
 }
 
 }  // namespace
 
-RunRecord simulate_dsmc(const RunOptions& o, bool progress) {
+RunRecord simulate_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
   dsmc::Config cfg;
   cfg.n = static_cast<std::size_t>(o.n);
   cfg.vhs_exponent = o.vhs_exponent;
@@ -147,7 +189,7 @@ RunRecord simulate_dsmc(const RunOptions& o, bool progress) {
   return registry::dispatch(
       [&](auto dim, auto model, auto sp) {
         return run<decltype(dim)::type::value, typename decltype(model)::type,
-                   decltype(sp)::type::value>(o, cfg, progress);
+                   decltype(sp)::type::value>(o, cfg, progress, ctx);
       },
       registry::dimension(o.dim), registry::model(o.model), registry::species(species));
 }

@@ -1,6 +1,7 @@
 // sim/run_edmd.cpp -- `hypergas run --engine edmd`: event-driven MD with recorders.
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "engine_runs.hpp"
 #include "hypergas/analysis/moments_recorder.hpp"
@@ -9,40 +10,58 @@
 #include "hypergas/edmd/engine.hpp"
 #include "hypergas/engine_concept.hpp"
 #include "hypergas/registry.hpp"
+#include "run_driver.hpp"
 #include "run_observer.hpp"
 
 namespace hypergas::cli {
 
 namespace {
 
-/// Fraction of [0, until] spent equilibrating the lattice start before sampling.
+/// Fraction of [0, until] spent equilibrating the lattice start before sampling, and the
+/// stops (checkpoint opportunities) in it.
 constexpr double equilibration_fraction = 0.2;
+constexpr int equilibration_stops = 10;
 
 template <int D, bool Species>
-RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress) {
+RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress, RunContext& ctx) {
   constexpr Features F{.positions = true, .species = Species};
+  using Engine = edmd::Engine<D, F>;
+  static_assert(SimulationEngine<Engine>);
   using Clock = std::chrono::steady_clock;
   const double until = o.until > 0.0 ? o.until : 20.0;
   const double t_eq = equilibration_fraction * until;
   const double every = sampling_interval(until - t_eq, o.every);
+  const RunPlan plan{.until = until, .every = every, .t0 = t_eq,
+                     .warmup_stops = equilibration_stops, .clamp_last = false};
 
   const auto t0 = Clock::now();
-  static_assert(SimulationEngine<edmd::Engine<D, F>>);
-  edmd::Engine<D, F> engine(cfg);
-  const auto c0 = conserved(engine.particles());
-  const auto t1 = Clock::now();
-  engine.run_until(t_eq);
-  engine.reset_observables();
   RunRecord rec;
   rec.vacf = std::make_unique<analysis::VacfRecorder>(std::min<std::size_t>(cfg.n, 2000));
   analysis::VacfRecorder& vacf = *rec.vacf;
+  DriverState st;
+  Conserved<D> c0;
+  std::optional<Engine> e;
+  if (ctx.resume) {
+    (*ctx.resume)(st, c0, rec.moments, vacf);
+    e.emplace(cfg, *ctx.resume);
+    ctx.resume->finish();
+    ++st.resumes;
+  } else {
+    e.emplace(cfg);
+    c0 = conserved(e->particles());
+  }
+  Engine& engine = *e;
   RunObserver obs({&rec.moments, &vacf}, "edmd", until, progress);
-  engine.run_until(until, &obs, every);
+  const auto save = [&](checkpoint::Writer& w) {
+    save_header(w, o);
+    w(st, c0, rec.moments, vacf, engine);
+  };
+  drive(engine, plan, st, obs, ctx.checkpoints, save);
   const auto t2 = Clock::now();
   const auto c1 = conserved(engine.particles());
 
   const double wall = std::chrono::duration<double>(t2 - t0).count();
-  const double engine_s = std::chrono::duration<double>(t2 - t1).count() - obs.analysis_seconds();
+  const double engine_s = st.engine_s;
   const auto coll = static_cast<std::int64_t>(engine.collisions());
   const auto last = [&](const char* col) { return rec.moments.column(col).back(); };
   rec.summary = analysis::JsonObject{
@@ -70,13 +89,19 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress) {
       {"diffusion_green_kubo", vacf.frames() >= 2 ? vacf.green_kubo() : 0.0},
       {"kurtosis_x", last("kurtosis_x")},
       {"ks_p_speed", last("ks_p_speed")},
+      {"engine_s", st.engine_s},
+      {"analysis_s", st.analysis_s},
+      {"engine_bytes_per_particle", engine.bytes_per_particle()},
+      {"peak_rss_bytes_per_particle", peak_rss_bytes() / static_cast<double>(o.n)},
+      {"checkpoints", static_cast<std::int64_t>(st.checkpoints)},
+      {"resumes", static_cast<std::int64_t>(st.resumes)},
   };
   return rec;
 }
 
 }  // namespace
 
-RunRecord simulate_edmd(const RunOptions& o, bool progress) {
+RunRecord simulate_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
   edmd::Config cfg;
   cfg.n = static_cast<std::size_t>(o.n);
   cfg.packing = o.packing;
@@ -88,7 +113,7 @@ RunRecord simulate_edmd(const RunOptions& o, bool progress) {
   const bool species = o.mass_ratio != 1.0;
   return registry::dispatch(
       [&](auto dim, auto sp) {
-        return run<decltype(dim)::type::value, decltype(sp)::type::value>(o, cfg, progress);
+        return run<decltype(dim)::type::value, decltype(sp)::type::value>(o, cfg, progress, ctx);
       },
       registry::dimension(o.dim), registry::species(species));
 }

@@ -1,6 +1,6 @@
 // sim/run_observer.hpp -- the observer a command hands to an engine: forwards each snapshot
-// to the analysis recorders, draws the progress bar, honours Ctrl-C, and measures the wall
-// time spent in analysis.
+// to the analysis recorders, draws the progress bar, and measures the wall time spent in
+// analysis.
 #pragma once
 
 #include <cstddef>
@@ -12,8 +12,8 @@
 
 namespace hypergas::cli {
 
-/// Forwards snapshots to `targets`, updates a progress bar over [0, end_time], throws
-/// Interrupted after SIGINT/SIGTERM, and measures the wall time spent in the targets.
+/// Forwards snapshots to `targets`, updates a progress bar over [0, end_time], and measures
+/// the wall time spent in the targets. (Ctrl-C is handled between stops: run_driver.hpp.)
 class RunObserver final : public Observer {
  public:
   RunObserver(std::vector<Observer*> targets, const char* label, double end_time,

@@ -3,7 +3,9 @@
 
 #include <gsl/gsl_histogram.h>
 
+#include <algorithm>
 #include <cmath>
+#include <new>
 #include <string>
 
 #include "hypergas/analysis/output.hpp"
@@ -31,6 +33,8 @@ Histogram::Histogram(double lo, double hi, std::size_t bins) : impl_(std::make_u
   if (!impl_->h) throw std::bad_alloc();
   gsl_histogram_set_ranges_uniform(impl_->h, lo, hi);
 }
+
+Histogram::Histogram() : Histogram(0.0, 1.0, 1) {}
 
 Histogram::~Histogram() = default;
 Histogram::Histogram(const Histogram& other) : impl_(std::make_unique<Impl>(*other.impl_)) {}
@@ -84,13 +88,41 @@ double Histogram::density(std::size_t i) const {
   return t > 0.0 ? count(i) / (t * (upper(i) - lower(i))) : 0.0;
 }
 
-Histogram make_histogram(const std::vector<double>& xs, const MaxwellReference& ref,
-                         std::size_t bins) {
+void Histogram::restore(const std::vector<double>& edges, const std::vector<double>& counts,
+                        double under, double over) {
+  const auto bad = [](const std::string& what) {
+    throw InvalidInput("Histogram: cannot restore a histogram with " + what);
+  };
+  if (counts.empty() || edges.size() != counts.size() + 1)
+    bad(std::to_string(edges.size()) + " edges for " + std::to_string(counts.size()) + " bins");
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    if (!std::isfinite(edges[i]) || (i > 0 && !(edges[i - 1] < edges[i])))
+      bad("bin edges that are not finite and increasing");
+  const auto is_count = [](double c) { return c >= 0.0 && c == std::floor(c) && c < 0x1p53; };
+  for (double c : counts)
+    if (!is_count(c)) bad("a bin count that is not a whole number >= 0");
+  if (!is_count(under) || !is_count(over)) bad("an underflow or overflow that is not a count");
+  auto fresh = std::make_unique<Impl>();
+  fresh->h = gsl_histogram_alloc(counts.size());
+  if (!fresh->h) throw std::bad_alloc();
+  gsl_histogram_set_ranges(fresh->h, edges.data(), edges.size());
+  std::copy(counts.begin(), counts.end(), fresh->h->bin);
+  fresh->under = under;
+  fresh->over = over;
+  impl_ = std::move(fresh);
+}
+
+Histogram make_histogram(const MaxwellReference& ref, std::size_t bins) {
   ref.validate();
   constexpr double tail = 1e-7;
   const double hi = ref.quantile(1.0 - tail);
   const double lo = ref.quantity == Quantity::component ? ref.quantile(tail) : 0.0;
-  Histogram h(lo, hi, bins);
+  return Histogram(lo, hi, bins);
+}
+
+Histogram make_histogram(const std::vector<double>& xs, const MaxwellReference& ref,
+                         std::size_t bins) {
+  Histogram h = make_histogram(ref, bins);
   h.add(xs);
   return h;
 }

@@ -1,9 +1,11 @@
-// MomentsRecorder: moments, distances and tests per snapshot; moments.csv and the final
-// speed histogram.
+// MomentsRecorder: moments, distances and tests per snapshot in streaming passes; moments.csv
+// and the final speed histogram.
 #include "hypergas/analysis/moments_recorder.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <utility>
 
 #include "hypergas/analysis/moments.hpp"
 #include "hypergas/analysis/output.hpp"
@@ -13,38 +15,73 @@
 
 namespace hypergas::analysis {
 
-MomentsRecorder::MomentsRecorder(std::size_t bins) : bins_(bins) {
+namespace {
+// The columns of every row, in order; mixtures add kT_0, kT_1, ...
+constexpr const char* common_columns[] = {"time",        "collisions_per_particle",
+                                          "m2",          "m4",
+                                          "kurtosis_x",  "m6",
+                                          "m2_err",      "m4_err",
+                                          "m6_err",      "kurtosis_x_err",
+                                          "m4_ratio",    "m4_ratio_err",
+                                          "kT",          "l1_speed",
+                                          "kl_speed",    "ks_p_speed",
+                                          "chi2_p_speed"};
+constexpr std::size_t n_common_columns = std::size(common_columns);
+}  // namespace
+
+MomentsRecorder::MomentsRecorder(std::size_t bins, std::size_t ks_cap, std::uint64_t ks_seed)
+    : bins_(bins), ks_cap_(ks_cap), ks_rng_(ks_seed, ks_stream) {
   if (bins < 1) throw InvalidInput("MomentsRecorder: need at least one histogram bin");
+  if (ks_cap < 1) throw InvalidInput("MomentsRecorder: the KS sample cap must be >= 1");
 }
 
 void MomentsRecorder::observe(const Snapshot& s) {
   validate(s);
   if (s.n < 2) throw InvalidInput("MomentsRecorder: need at least 2 particles");
   const int ns = s.species ? s.n_species : 1;
-  if (columns_.empty()) {
-    n_species_ = ns;
-    dim_ = s.dim;
-    columns_ = {"time",        "collisions_per_particle",
-                "m2",          "m4",
-                "kurtosis_x",  "m6",
-                "m2_err",      "m4_err",
-                "m6_err",      "kurtosis_x_err",
-                "m4_ratio",    "m4_ratio_err",
-                "kT",          "l1_speed",
-                "kl_speed",    "ks_p_speed",
-                "chi2_p_speed"};
-    if (ns > 1)
-      for (int k = 0; k < ns; ++k) columns_.push_back("kT_" + std::to_string(k));
-  } else if (ns != n_species_ || s.dim != dim_) {
+  if (!columns_.empty() && (ns != n_species_ || s.dim != dim_))
     throw InvalidInput("MomentsRecorder: snapshot dimension or species count changed");
+  const Summation how = s.n <= ks_cap_ ? Summation::plain : Summation::compensated;
+
+  // Pass 1: counts, masses and kinetic energies, per species and of all particles.
+  const SnapshotTotals totals(s);
+  const double m_mean = totals.mean_mass(-1, how);
+  // The references: MB at the common kT, of the mean mass (pooled) or of each species'
+  // mass; a species with no particle gets the pooled one (and an empty histogram).
+  const MaxwellReference ref{Quantity::speed, s.dim, totals.temperature(-1, how), m_mean};
+  ref.validate();
+  std::vector<MaxwellReference> refs{ref};
+  std::vector<Histogram> hists{make_histogram(ref, bins_)};
+  if (ns > 1) {
+    for (int k = 0; k < ns; ++k) {
+      MaxwellReference rk = ref;
+      if (totals.count(k) > 0) rk.mass = totals.mean_mass(k, how);
+      rk.validate();
+      refs.push_back(rk);
+      hists.push_back(make_histogram(rk, bins_));
+    }
   }
 
-  const Moments m = compute_moments(s);
-  const MaxwellReference ref = reference(s, Quantity::speed);
-  const std::vector<double> speeds = values(s, Quantity::speed);
-  Histogram h = make_histogram(speeds, ref, bins_);
+  // Pass 2: power sums, histograms and the KS sample. Pooled speeds are mass-weighted,
+  // |v| sqrt(m_i / m_mean); species speeds are plain |v|.
+  MomentSums sums(s.dim, m_mean);
+  SequentialSample pick(s.n, ks_cap_, ks_rng_.split(rows_.size()));
+  std::vector<double> ks_sample;
+  ks_sample.reserve(std::min(s.n, ks_cap_));
+  const auto stride = static_cast<std::size_t>(s.stride);
+  for (std::size_t i = 0; i < s.n; ++i) {
+    const double w = s.inverse_mass(i);
+    const double vv = sums.add(s.velocities + i * stride, w);
+    const double f = 1.0 / std::sqrt(w * m_mean);
+    const double speed = f * std::sqrt(vv);
+    hists[0].add(speed);
+    if (ns > 1) hists[1 + s.species[i]].add(std::sqrt(vv));
+    if (pick.take()) ks_sample.push_back(speed);
+  }
+  const Moments m = sums.result(how);
+  const double ks_p = ks_test(std::move(ks_sample), ref).p_value;
   // kT comes from the same sample: one fitted parameter for the chi-square test.
-  const double chi2_p = chi_square_test(h, ref, 1).p_value;
+  const double chi2_p = chi_square_test(hists[0], ref, 1).p_value;
   std::vector<double> row = {s.time,
                              s.collisions_per_particle,
                              m.m2.value,
@@ -58,26 +95,24 @@ void MomentsRecorder::observe(const Snapshot& s) {
                              m.m4_ratio.value,
                              m.m4_ratio.error,
                              m.kT,
-                             l1_distance(h, ref),
-                             kl_divergence(h, ref),
-                             ks_test(speeds, ref).p_value,
+                             l1_distance(hists[0], ref),
+                             kl_divergence(hists[0], ref),
+                             ks_p,
                              chi2_p};
-  last_histograms_.clear();
-  last_refs_.clear();
-  last_histograms_.push_back(std::move(h));
-  last_refs_.push_back(ref);
-  if (ns > 1) {
-    for (int k = 0; k < ns; ++k) {
-      const bool present = count(s, k) > 0;
-      row.push_back(present ? temperature(s, k) : NAN);
-      // Species histograms: each species' own speeds against MB at the common kT.
-      const MaxwellReference rk = present ? reference(s, Quantity::speed, k) : ref;
-      last_histograms_.push_back(make_histogram(
-          present ? values(s, Quantity::speed, k) : std::vector<double>{}, rk, bins_));
-      last_refs_.push_back(rk);
-    }
+  if (ns > 1)
+    for (int k = 0; k < ns; ++k)
+      row.push_back(totals.count(k) > 0 ? totals.temperature(k, how) : NAN);
+
+  if (columns_.empty()) {
+    n_species_ = ns;
+    dim_ = s.dim;
+    columns_.assign(std::begin(common_columns), std::end(common_columns));
+    if (ns > 1)
+      for (int k = 0; k < ns; ++k) columns_.push_back("kT_" + std::to_string(k));
   }
   rows_.push_back(std::move(row));
+  last_histograms_ = std::move(hists);
+  last_refs_ = std::move(refs);
 }
 
 std::vector<double> MomentsRecorder::column(const std::string& name) const {
@@ -101,6 +136,28 @@ void MomentsRecorder::write_speed_histogram_csv(const std::string& path, int spe
   if (species < -1 || k >= last_histograms_.size())
     throw InvalidInput("MomentsRecorder: no species " + std::to_string(species) + " for " + path);
   write_histogram_csv(path, last_histograms_[k], last_refs_[k]);
+}
+
+void MomentsRecorder::check_restored() const {
+  const auto bad = [](const std::string& what) {
+    throw InvalidInput("MomentsRecorder: restored state is inconsistent: " + what);
+  };
+  if (bins_ < 1 || ks_cap_ < 1) bad("no histogram bin or a KS cap of 0");
+  const bool empty = columns_.empty();
+  if (empty != rows_.empty() || empty != last_histograms_.empty())
+    bad("columns, rows and histograms disagree on whether anything was observed");
+  if (last_histograms_.size() != last_refs_.size())
+    bad("histograms and references differ in number");
+  if (empty) return;
+  if (n_species_ < 1 || dim_ < 1) bad("no species or no dimension");
+  const std::size_t per_species = n_species_ > 1 ? static_cast<std::size_t>(n_species_) : 0;
+  if (columns_.size() != n_common_columns + per_species ||
+      last_histograms_.size() != 1 + per_species)
+    bad("the number of columns or histograms does not fit the species count");
+  for (const auto& r : rows_)
+    if (r.size() != columns_.size()) bad("a row of another length than the columns");
+  for (const auto& h : last_histograms_)
+    if (h.bins() != bins_) bad("a histogram of another bin count");
 }
 
 }  // namespace hypergas::analysis

@@ -137,7 +137,7 @@ void write_csv(const std::string& path, const std::vector<std::string>& columns,
     for (const auto& row : rows) {
       for (std::size_t c = 0; c < row.size(); ++c) {
         if (c) os << ',';
-        put_double(os, row[c]);
+        if (std::isfinite(row[c])) put_double(os, row[c]);  // empty: undefined (see header)
       }
       os << '\n';
     }

@@ -18,6 +18,17 @@ double speed_sq(const Snapshot& s, std::size_t i) {
   for (int k = 0; k < s.dim; ++k) vv += v[k] * v[k];
   return vv;
 }
+// The inverse mass of particle i; throws unless it is finite and positive.
+double checked_inverse_mass(const Snapshot& s, std::size_t i) {
+  const double w = s.inverse_mass(i);
+  if (!(w > 0.0 && std::isfinite(w)))
+    throw InvalidInput("snapshot: particle " + std::to_string(i) + " has inverse mass " +
+                       std::to_string(w) + " (the analysis needs finite, positive masses)");
+  return w;
+}
+[[noreturn]] void no_particles(int species) {
+  throw InvalidInput("snapshot: no particle of species " + std::to_string(species));
+}
 }  // namespace
 
 void validate(const Snapshot& s) {
@@ -45,37 +56,33 @@ std::size_t count(const Snapshot& s, int species) {
   return c;
 }
 
-double mean_mass(const Snapshot& s, int species) {
-  double sum = 0.0;
+double mean_mass(const Snapshot& s, int species, Summation how) {
+  RunningSum sum;
   std::size_t c = 0;
   for (std::size_t i = 0; i < s.n; ++i)
     if (selected(s, i, species)) {
-      const double w = s.inverse_mass(i);
-      if (!(w > 0.0 && std::isfinite(w)))
-        throw InvalidInput("snapshot: particle " + std::to_string(i) + " has inverse mass " +
-                           std::to_string(w) + " (the analysis needs finite, positive masses)");
-      sum += 1.0 / w;
+      sum.add(1.0 / checked_inverse_mass(s, i));
       ++c;
     }
-  if (c == 0) throw InvalidInput("snapshot: no particle of species " + std::to_string(species));
-  return sum / static_cast<double>(c);
+  if (c == 0) no_particles(species);
+  return sum.value(how) / static_cast<double>(c);
 }
 
-double temperature(const Snapshot& s, int species) {
-  double twice_e = 0.0;
+double temperature(const Snapshot& s, int species, Summation how) {
+  RunningSum twice_e;
   std::size_t c = 0;
   for (std::size_t i = 0; i < s.n; ++i)
     if (selected(s, i, species)) {
-      twice_e += speed_sq(s, i) / s.inverse_mass(i);
+      twice_e.add(speed_sq(s, i) / s.inverse_mass(i));
       ++c;
     }
-  if (c == 0) throw InvalidInput("snapshot: no particle of species " + std::to_string(species));
-  return twice_e / (static_cast<double>(s.dim) * static_cast<double>(c));
+  if (c == 0) no_particles(species);
+  return twice_e.value(how) / (static_cast<double>(s.dim) * static_cast<double>(c));
 }
 
-std::vector<double> values(const Snapshot& s, Quantity q, int species) {
+std::vector<double> values(const Snapshot& s, Quantity q, int species, Summation how) {
   validate(s);
-  const double m_mean = (species < 0 && q != Quantity::energy) ? mean_mass(s, -1) : 0.0;
+  const double m_mean = (species < 0 && q != Quantity::energy) ? mean_mass(s, -1, how) : 0.0;
   std::vector<double> out;
   out.reserve(count(s, species));
   for (std::size_t i = 0; i < s.n; ++i) {
@@ -98,11 +105,49 @@ std::vector<double> values(const Snapshot& s, Quantity q, int species) {
   return out;
 }
 
-MaxwellReference reference(const Snapshot& s, Quantity q, int species) {
+MaxwellReference reference(const Snapshot& s, Quantity q, int species, Summation how) {
   validate(s);
-  MaxwellReference r{q, s.dim, temperature(s, -1), mean_mass(s, species)};
+  MaxwellReference r{q, s.dim, temperature(s, -1, how), mean_mass(s, species, how)};
   r.validate();
   return r;
+}
+
+SnapshotTotals::SnapshotTotals(const Snapshot& s)
+    : dim_(s.dim), t_(1 + static_cast<std::size_t>(s.n_species)) {
+  Totals& all = t_[0];
+  for (std::size_t i = 0; i < s.n; ++i) {
+    Totals& mine = t_[1 + (s.species ? s.species[i] : 0u)];
+    const double w = checked_inverse_mass(s, i);
+    const double m = 1.0 / w, e = speed_sq(s, i) / w;
+    all.mass.add(m);
+    all.twice_e.add(e);
+    ++all.n;
+    mine.mass.add(m);
+    mine.twice_e.add(e);
+    ++mine.n;
+  }
+}
+
+const SnapshotTotals::Totals* SnapshotTotals::of(int species) const {
+  const std::size_t k = species < 0 ? 0 : 1 + static_cast<std::size_t>(species);
+  return k < t_.size() ? &t_[k] : nullptr;
+}
+
+std::size_t SnapshotTotals::count(int species) const {
+  const Totals* t = of(species);
+  return t ? t->n : 0;
+}
+
+double SnapshotTotals::mean_mass(int species, Summation how) const {
+  const Totals* t = of(species);
+  if (!t || t->n == 0) no_particles(species);
+  return t->mass.value(how) / static_cast<double>(t->n);
+}
+
+double SnapshotTotals::temperature(int species, Summation how) const {
+  const Totals* t = of(species);
+  if (!t || t->n == 0) no_particles(species);
+  return t->twice_e.value(how) / (static_cast<double>(dim_) * static_cast<double>(t->n));
 }
 
 }  // namespace hypergas::analysis

@@ -10,6 +10,8 @@
 //                                every, t0 + 2 every, ... <= t, t0 = time() at the call.
 //                                Throws InvalidInput if t is not finite or t < time(), or if
 //                                obs is set and `every` is not finite and > 0;
+//   e.observe(obs)               calls obs.observe with the state at time(), changing
+//                                nothing (a driver that picks its own stops uses it);
 //   e.time(), e.collisions()     the engine's clock and the accepted collisions so far;
 //   e.particles()                the particle store (conserved(e.particles()) gives the
 //                                conserved sums, conserved.hpp);
@@ -36,6 +38,7 @@ concept SimulationEngine = requires(E& e, const E& ce, const typename E::Config&
   { cfg.initial } -> std::convertible_to<InitialParams>;
   E(cfg);
   e.run_until(t, obs, t);
+  e.observe(*obs);
   { ce.time() } -> std::convertible_to<double>;
   { ce.collisions() } -> std::convertible_to<std::uint64_t>;
   conserved(ce.particles());

@@ -85,13 +85,29 @@ using AlignedVector = std::vector<T, CacheLineAllocator<T>>;
 }  // namespace detail
 
 /// Reorders an array of records of `width` entries each: afterwards record i is the former
-/// record from[i] (`from` a permutation of the record indices).
+/// record from[i] (`from` a permutation of the record indices). In place, cycle by cycle,
+/// with one bit per record of extra memory (a copy of the array would double the peak
+/// memory of the engines that renumber their particles).
 template <class Array>
 void permute_records(Array& a, const std::vector<std::uint32_t>& from, std::size_t width) {
-  Array out = a;
-  for (std::size_t i = 0; i < from.size(); ++i)
-    for (std::size_t k = 0; k < width; ++k) out[i * width + k] = a[from[i] * width + k];
-  a.swap(out);
+  const std::size_t n = from.size();
+  std::vector<bool> done(n, false);
+  std::vector<typename Array::value_type> tmp(width);
+  for (std::size_t s = 0; s < n; ++s) {
+    if (done[s]) continue;
+    for (std::size_t k = 0; k < width; ++k) tmp[k] = a[s * width + k];
+    std::size_t j = s;
+    for (;;) {
+      done[j] = true;
+      const std::size_t f = from[j];
+      if (f == s) {
+        for (std::size_t k = 0; k < width; ++k) a[j * width + k] = tmp[k];
+        break;
+      }
+      for (std::size_t k = 0; k < width; ++k) a[j * width + k] = a[f * width + k];
+      j = f;
+    }
+  }
 }
 
 /// Particle storage for `n` particles in D dimensions with optional fields `F`.
@@ -211,6 +227,17 @@ class Particles {
     if constexpr (F.masses) permute_records(w_, from, 1);
     if constexpr (F.radii) permute_records(r_, from, 1);
     if constexpr (F.species) permute_records(s_, from, 1);
+  }
+
+  /// Saves or restores every field (hypergas/checkpoint.hpp).
+  template <class Archive>
+  void io(Archive& a) {
+    a.tag("particles");
+    a(n_, v_);
+    if constexpr (F.masses) a(w_);
+    if constexpr (F.radii) a(r_);
+    if constexpr (F.species) a(s_, species_w_);
+    if (v_.size() != n_ * stride) throw InvalidInput("checkpoint: particle arrays do not match");
   }
 
   /// Bytes of per-particle storage (capacity of all arrays divided by n).

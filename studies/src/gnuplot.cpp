@@ -2,6 +2,7 @@
 #include "hypergas/studies/gnuplot.hpp"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -43,6 +44,7 @@ bool run_gnuplot(std::string_view script, const std::filesystem::path& dir) {
   const pid_t pid = ::fork();
   if (pid < 0) return false;
   if (pid == 0) {  // child: stdin from the pipe, stdout discarded, stderr kept
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // dies with a killed parent: no orphan plotting
     ::dup2(fds[0], STDIN_FILENO);
     ::close(fds[0]);
     ::close(fds[1]);

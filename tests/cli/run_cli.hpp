@@ -60,10 +60,11 @@ class Scratch {
   fs::path path_;
 };
 
-/// Runs `hypergas args...` in folder `cwd`; if `interrupt_after_s` > 0, sends SIGINT after
-/// that many seconds. stdin is /dev/null, so stderr is not a terminal (no progress bar).
+/// Runs `hypergas args...` in folder `cwd`; if `signal_after_s` > 0 and the command still
+/// runs after that many seconds, sends it `sig` (SIGINT: Ctrl-C; SIGKILL: a kill). stdin is
+/// /dev/null, so stderr is not a terminal (no progress bar).
 inline Result run(const std::vector<std::string>& args, const fs::path& cwd,
-                  double interrupt_after_s = 0.0) {
+                  double signal_after_s = 0.0, int sig = SIGINT) {
   const fs::path out = cwd / ".stdout.txt", err = cwd / ".stderr.txt";
   std::vector<std::string> argv_s{HYPERGAS_CLI_PATH};
   argv_s.insert(argv_s.end(), args.begin(), args.end());
@@ -82,12 +83,22 @@ inline Result run(const std::vector<std::string>& args, const fs::path& cwd,
     ::execv(argv[0], argv.data());
     ::_exit(127);
   }
-  if (interrupt_after_s > 0.0) {
-    std::this_thread::sleep_for(std::chrono::duration<double>(interrupt_after_s));
-    ::kill(pid, SIGINT);
-  }
   int status = 0;
-  ::waitpid(pid, &status, 0);
+  if (signal_after_s > 0.0) {
+    const auto start = std::chrono::steady_clock::now();
+    for (;;) {
+      if (::waitpid(pid, &status, WNOHANG) == pid) break;
+      const std::chrono::duration<double> t = std::chrono::steady_clock::now() - start;
+      if (t.count() >= signal_after_s) {
+        ::kill(pid, sig);
+        ::waitpid(pid, &status, 0);
+        break;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  } else {
+    ::waitpid(pid, &status, 0);
+  }
   Result r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   r.out = slurp(out);

@@ -68,10 +68,54 @@ TEST_CASE("run: unknown names are rejected", "[cli]") {
   expect_rejected({"run", "--engine", "md"}, "unknown engine 'md'");
   expect_rejected({"run", "--model", "soft"}, "unknown model 'soft'");
   expect_rejected({"run", "--init", "nonsense"}, "unknown initial state 'nonsense'");
-  expect_rejected({"run", "--engine", "edmd", "--model", "maxwell"}, "needs --engine dsmc");
+  expect_rejected({"run", "--engine", "edmd", "--model", "maxwell"}, "--engine dsmc only");
   expect_rejected({"run", "--no-such-option", "1"}, "--no-such-option");
   expect_rejected({"run", "--threads", "0"}, "--threads must be in 1..64");
   expect_rejected({"run", "--engine", "edmd", "--threads", "2"}, "--engine dsmc only");
+}
+
+TEST_CASE("run: numbers are parsed whole and range-checked; repeats and strays refused",
+          "[cli]") {
+  expect_rejected({"run", "--until=-1"}, "--until must be a finite time > 0, got -1");
+  expect_rejected({"run", "--until", "-1"}, "--until must be a finite time > 0, got -1");
+  expect_rejected({"run", "--every=-1"}, "--every must be a finite interval > 0, got -1");
+  expect_rejected({"run", "--every", "0"}, "--every must be a finite interval > 0");
+  expect_rejected({"run", "--until", "nan"}, "--until must be a finite time > 0, got nan");
+  expect_rejected({"run", "--until", "1e400"}, "--until must be a number within double range");
+  expect_rejected({"run", "--until", "1e300"}, "--until must be at most 1e12");
+  expect_rejected({"run", "--until", "1", "--every", "1e-9"}, "samples; at most 1e6");
+  expect_rejected({"run", "--n", "10x"}, "--n must be an integer, got '10x'");
+  expect_rejected({"run", "--n", "0x10"}, "--n must be an integer, got '0x10'");
+  expect_rejected({"run", "--n", ""}, "--n must be an integer, got ''");
+  expect_rejected({"run", "--n", "2.5"}, "--n must be an integer, got '2.5'");
+  expect_rejected({"run", "--n", "99999999999"}, "--n must be at most 2^31");
+  // 2e9 particles of 6D EDMD need over 500 GB: more than any machine this runs on.
+  expect_rejected({"run", "--engine", "edmd", "--dim", "6", "--n", "2000000000"},
+                  "GB of memory");
+  expect_rejected({"run", "--seed", "-1"}, "--seed must be an integer >= 0");
+  expect_rejected({"run", "--seed", "1e3"}, "--seed must be an integer >= 0");
+  expect_rejected({"run", "--packing", "0.1.2"}, "--packing must be a number, got '0.1.2'");
+  expect_rejected({"run", "--n", "10", "--n", "20"}, "--n was given more than once");
+  expect_rejected({"run", "--bogus", "1"}, "--bogus");
+  expect_rejected({"run", "--engine", "dsmc", "--packing", "0.2"},
+                  "--packing applies to --engine edmd only");
+  expect_rejected({"run", "--engine", "edmd", "--temperature", "1"}, "--engine dsmc only");
+  expect_rejected({"run", "--engine", "edmd", "--threads", "1"}, "--engine dsmc only");
+  expect_rejected({"run", "--vhs-exponent", "0.3"}, "--vhs-exponent applies to --model vhs");
+  expect_rejected({"run", "--checkpoint-every", "0"}, "--checkpoint-every must be a finite");
+  expect_rejected({"run", "--checkpoint-wall", "5x"}, "unknown unit 'x'");
+  expect_rejected({"run", "--checkpoint-wall", "-1min"}, "--checkpoint-wall must be");
+  expect_rejected({"run", "--threads", "2", "--checkpoint-every", "1"}, "need --threads 1");
+}
+
+TEST_CASE("run: --n 1e4 is read as 10000", "[cli]") {
+  Scratch s("sci");
+  const auto r = cli_test::run(
+      {"run", "--n", "1e4", "--until", "0.1", "--out", (s.path() / "o").string(), "--json"},
+      s.path());
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("\"n\": 10000,") != std::string::npos);
 }
 
 TEST_CASE("run: an unwritable output folder is rejected and nothing is created", "[cli]") {

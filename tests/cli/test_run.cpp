@@ -1,6 +1,7 @@
 // CLI tests: happy paths of `hypergas run` and of the default scene. The files of the
 // contract (docs/design.md) exist with their columns, summary.json has its keys, --json
-// prints the same object as the last stdout line, and an interrupted run leaves nothing.
+// prints the same object as the last stdout line, and an interrupted run leaves only its
+// checkpoint.
 #include <catch2/catch.hpp>
 
 #ifdef HYPERGAS_CLI_PATH
@@ -72,7 +73,7 @@ TEST_CASE("run in 1D with two masses, and with Maxwell molecules in 5D", "[cli]"
   CHECK(r.out.find("\"model\": \"maxwell\"") != std::string::npos);
 }
 
-TEST_CASE("an interrupted run leaves no files behind", "[cli]") {
+TEST_CASE("an interrupted run leaves its checkpoint and nothing else", "[cli]") {
   Scratch s("interrupt");
   const auto out = s.path() / "out";
   // Long enough (about a minute) that SIGINT after 1.5 s arrives mid-run.
@@ -82,8 +83,11 @@ TEST_CASE("an interrupted run leaves no files behind", "[cli]") {
   INFO("stderr: " << r.err);
   CHECK(r.code == 130);
   CHECK(r.err.find("interrupted") != std::string::npos);
-  CHECK_FALSE(cli_test::fs::exists(out));
-  CHECK(s.entries() == 0);
+  CHECK(r.err.find("hypergas resume " + out.string()) != std::string::npos);
+  // Only the checkpoint (tests/cli/test_checkpoint.cpp resumes such runs): no CSV, no
+  // staging folder, no temporary file.
+  CHECK(cli_test::fs::exists(out / "checkpoint.hgck"));
+  CHECK(s.entries() == 2);  // out/ and out/checkpoint.hgck
 }
 
 TEST_CASE("the default scene prints one row per D and writes CSV under --out", "[cli]") {

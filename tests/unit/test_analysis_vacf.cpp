@@ -105,7 +105,7 @@ TEST_CASE("Ornstein–Uhlenbeck: Green–Kubo and MSD slope give D_s = (kT/m) ta
   CHECK(std::abs(gk - em.value) < 0.027 * a * tau);
 }
 
-TEST_CASE("VacfRecorder stores frames and checks the spacing", "[analysis]") {
+TEST_CASE("VacfRecorder follows the first particles and checks the spacing", "[analysis]") {
   const std::size_t n = 5;
   const int dim = 2;
   Rng rng(43);
@@ -129,15 +129,34 @@ TEST_CASE("VacfRecorder stores frames and checks the spacing", "[analysis]") {
   CHECK(rec.frames() == 50);
   CHECK(rec.particles() == 3);
   CHECK(rec.dt() == Approx(0.2));
-  // The recorder's VACF is the VACF of the first 3 particles.
-  std::vector<double> first3;
+  // The recorder's VACF is the VACF of the first 3 particles, at the multiple-tau lags up
+  // to 25 = frames / 2: every lag below p = 16 (exact), then every second lag (level 1,
+  // the VACF of the means of frame pairs; multi_tau.hpp).
+  std::vector<double> first3, x3, pairs;
   for (std::size_t f = 0; f < 50; ++f)
-    for (std::size_t i = 0; i < 3 * dim; ++i) first3.push_back(s.v[f * n * dim + i]);
-  const auto ref = vacf_direct(first3, 50, 3, dim, 25);
+    for (std::size_t i = 0; i < 3 * dim; ++i) {
+      first3.push_back(s.v[f * n * dim + i]);
+      x3.push_back(s.x[f * n * dim + i]);
+    }
+  for (std::size_t b = 0; b < 25; ++b)
+    for (std::size_t i = 0; i < 3 * dim; ++i)
+      pairs.push_back(0.5 * (first3[2 * b * 3 * dim + i] + first3[(2 * b + 1) * 3 * dim + i]));
+  const auto ref = vacf_direct(first3, 50, 3, dim, 15);
+  const auto ref_pairs = vacf_direct(pairs, 25, 3, dim, 12);
+  const auto ref_msd = msd_direct(x3, 50, 3, dim, 15);
+  const auto lags = rec.lags();
   const auto got = rec.vacf();
-  REQUIRE(got.size() == 26);
-  for (std::size_t l = 0; l <= 25; ++l) CHECK(got[l] == Approx(ref[l]).margin(1e-12 * ref[0]));
-  CHECK(rec.msd().size() == 26);
+  const auto got_msd = rec.msd();
+  REQUIRE(lags == std::vector<std::size_t>{0,  1,  2,  3,  4,  5,  6,  7,  8,  9, 10,
+                                           11, 12, 13, 14, 15, 16, 18, 20, 22, 24});
+  REQUIRE(got.size() == lags.size());
+  REQUIRE(got_msd.size() == lags.size());
+  for (std::size_t l = 0; l < 16; ++l) {
+    CHECK(got[l] == Approx(ref[l]).margin(1e-12 * ref[0]));
+    CHECK(got_msd[l] == Approx(ref_msd[l]).margin(1e-12 * ref_msd[15]));
+  }
+  for (std::size_t i = 16; i < lags.size(); ++i)
+    CHECK(got[i] == Approx(ref_pairs[lags[i] / 2]).margin(1e-12 * ref[0]));
   // A snapshot off the time grid is refused.
   Snapshot late;
   late.dim = dim;

@@ -67,6 +67,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "hypergas/checkpoint.hpp"
 #include "hypergas/dsmc/config.hpp"
 #include "hypergas/dsmc/huge_pages.hpp"
 #include "hypergas/dsmc/majorant.hpp"
@@ -115,6 +116,50 @@ class Engine {
                               p_.velocity_data().size() * sizeof(double));
     retune(true);
     generate(batch_[1 - cur_]);  // the batch after the (empty) current one
+  }
+
+  /// Restores an engine saved by io() (hypergas/checkpoint.hpp); it continues bit for bit as
+  /// the saved one would have. Throws InvalidInput if the file holds another engine,
+  /// dimension, model or feature set.
+  Engine(const Config& cfg, checkpoint::Reader& in)
+      : cfg_(cfg), model_(make_model(cfg)), rng_(Rng(cfg.seed).split(2)),
+        pairs_(fast_stream(cfg.seed, 4)), coll_(fast_stream(cfg.seed, 5)) {
+    io(in);
+  }
+
+  /// Saves or restores the complete state: velocities, the three random streams, the
+  /// majorant, the epoch's position in the candidate batches and the counters.
+  template <class Archive>
+  void io(Archive& a) {
+    static_assert(std::is_trivially_copyable_v<Rng> && std::is_trivially_copyable_v<FastRng> &&
+                  std::is_trivially_copyable_v<Model> && std::is_trivially_copyable_v<Config>);
+    a.tag(identity());
+    a(cfg_, p_, model_, rng_, n_, c_, lambda_, bound_, raise_to_, time_, observed_at_);
+    a(collisions_, candidates_, since_scan_, pairs_, coll_, batch_, cur_, pos_, mask_);
+    a(tested_g_, self_check_, check_failures_, species_w_);
+    if (p_.size() != n_) throw InvalidInput("checkpoint: particle count does not match");
+  }
+  /// "dsmc D=3 model=hs species=0": what a checkpoint must match.
+  static std::string identity() {
+    return "dsmc D=" + std::to_string(D) + " model=" + std::string(Model::name) +
+           " species=" + std::to_string(int(F.species));
+  }
+
+  /// Calls obs with the current state (velocities, time, counters); changes nothing.
+  void observe(Observer& obs) {
+    Snapshot s = make_snapshot(p_);
+    s.time = time_;
+    s.collisions = collisions_;
+    s.collisions_per_particle = collisions_per_particle();
+    if constexpr (F.species) {
+      int ns = 1;
+      for (int k = 0; k < max_species; ++k) species_w_[k] = p_.species_inv_mass(k);
+      for (std::size_t i = 0; i < p_.size(); ++i) ns = std::max(ns, p_.species(i) + 1);
+      s.species = p_.species_data().data();
+      s.species_inv_mass = species_w_.data();
+      s.n_species = ns;
+    }
+    obs.observe(s);
   }
 
   /// Advances the process to time t (mean collision times; engine_concept.hpp). With an
@@ -425,22 +470,6 @@ class Engine {
       }
       time_ = last ? t_end : time_ + h;
     }
-  }
-
-  void observe(Observer& obs) {
-    Snapshot s = make_snapshot(p_);
-    s.time = time_;
-    s.collisions = collisions_;
-    s.collisions_per_particle = collisions_per_particle();
-    if constexpr (F.species) {
-      int ns = 1;
-      for (int k = 0; k < max_species; ++k) species_w_[k] = p_.species_inv_mass(k);
-      for (std::size_t i = 0; i < p_.size(); ++i) ns = std::max(ns, p_.species(i) + 1);
-      s.species = p_.species_data().data();
-      s.species_inv_mass = species_w_.data();
-      s.n_species = ns;
-    }
-    obs.observe(s);
   }
 
   Config cfg_;

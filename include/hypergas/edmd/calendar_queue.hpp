@@ -60,6 +60,14 @@ class CalendarQueue {
     t_[id] = t;
     link(id);
   }
+  /// Saves or restores the whole calendar, links included (hypergas/checkpoint.hpp): the
+  /// order within a bucket decides between equal times, so a rebuilt calendar could pop
+  /// a tie in another order than the saved one.
+  template <class Archive>
+  void io(Archive& a) {
+    a.tag("calendar");
+    a(t_, next_, prev_, bucket_, head_, nb_, cur_, min_, base_, inv_w_);
+  }
   /// Bytes per particle (time, two links, bucket index, and one bucket head per particle).
   static constexpr double bytes_per_particle() {
     return sizeof(double) + 4 * sizeof(std::int32_t);

@@ -181,6 +181,13 @@ class Cells {
   }
 
   /// Bytes per particle of the lists (cell id, next, prev) plus the cell heads and bits.
+  /// Saves or restores the grid and its lists (member order decides the scan order).
+  template <class Archive>
+  void io(Archive& a) {
+    a.tag("cells");
+    a(m_, L_, w_, ncells_, head_, next_, prev_, cell_, occupied_, offsets_);
+  }
+
   double bytes_per_particle(std::size_t n) const {
     return 3.0 * sizeof(std::int32_t) +
            static_cast<double>(ncells_ * sizeof(std::int32_t) + occupied_.size() * 8) /

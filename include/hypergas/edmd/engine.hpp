@@ -41,6 +41,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -48,6 +49,7 @@
 #include <utility>
 #include <vector>
 
+#include "hypergas/checkpoint.hpp"
 #include "hypergas/collision.hpp"
 #include "hypergas/edmd/calendar_queue.hpp"
 #include "hypergas/edmd/compression.hpp"
@@ -92,6 +94,27 @@ class Engine {
     reset_observables();
   }
 
+  /// Restores an engine saved by io() (hypergas/checkpoint.hpp): the same state, the same
+  /// event calendar, so that it continues bit for bit as the saved one would have. Throws
+  /// InvalidInput if the file holds another engine, dimension or feature set.
+  Engine(const Config& cfg, checkpoint::Reader& in) : debug_(cfg.debug_overlap), cfg_(cfg) {
+    io(in);
+  }
+
+  /// Saves or restores the complete engine state (every array, the calendar's links, the
+  /// counters and the measurement window); the scans' scratch is not state.
+  template <class Archive>
+  void io(Archive& a) {
+    a.tag(identity());
+    a(static_cast<State<D, F>&>(s_), scanner_, q_, win_, reorder_every_, next_reorder_, cfg_);
+  }
+  /// "edmd D=3 scan=horizon species=0 masses=0 radii=0": what a checkpoint must match.
+  static std::string identity() {
+    return "edmd D=" + std::to_string(D) + " scan=" + std::string(Scan::name) +
+           " species=" + std::to_string(int(F.species)) + " masses=" +
+           std::to_string(int(F.masses)) + " radii=" + std::to_string(int(F.radii));
+  }
+
   // ---- running ------------------------------------------------------------------------
   /// Processes all events up to time t (sigma sqrt(m/kT)); time() == t afterwards. If obs is
   /// non-null it is called at times t0, t0 + every, t0 + 2 every, ... <= t (t0 = time() at
@@ -119,6 +142,9 @@ class Engine {
     }
     s_.now = t;
   }
+  /// Calls obs with the state at time() (velocities and unwrapped positions, original
+  /// numbering); changes nothing.
+  void observe(Observer& obs) const { sample(s_.now, obs); }
   /// Processes exactly one event (a collision, a cell crossing or a re-prediction).
   void step() {
     if (s_.ncoll >= next_reorder_) reorder();
@@ -382,24 +408,50 @@ class Engine {
     q_.build(keys);
   }
 
+  /// Observes the state at time ts (>= every local clock) in the original numbering: one
+  /// buffer of [position, velocity] records (2 D doubles per particle) and, for mixtures, the
+  /// species (or masses) in that order. No copy of the particle store.
   void sample(double ts, Observer& obs) const {
     const State<D, F>& s = s_;
     const std::size_t n = size();
-    constexpr int st = Store::stride;
-    std::vector<double> xu(n * st, 0.0);
+    constexpr int st = 2 * D;
+    std::vector<double> rec(n * st);
     for (std::size_t a = 0; a < n; ++a) {  // a: original id, i: its current slot
       const std::size_t i = s.slot[a];
-      for (int k = 0; k < D; ++k)
-        xu[a * st + k] = s.p.position(i)[k] + s.p.velocity(i)[k] * (ts - s.p.local_time(i)) +
-                         s.L * s.image[i * D + k];
+      for (int k = 0; k < D; ++k) {
+        rec[a * st + k] = s.p.position(i)[k] + s.p.velocity(i)[k] * (ts - s.p.local_time(i)) +
+                          s.L * s.image[i * D + k];
+        rec[a * st + D + k] = s.p.velocity(i)[k];
+      }
     }
-    Store ordered = s.p;  // velocities in the original numbering
-    ordered.permute(s.slot);
-    Snapshot snap = make_snapshot(ordered);
+    Snapshot snap;
+    snap.dim = D;
+    snap.n = n;
+    snap.stride = st;
+    snap.velocities = rec.data() + D;
+    snap.positions = rec.data();
     snap.time = ts;
     snap.collisions = s.ncoll;
     snap.collisions_per_particle = 2.0 * static_cast<double>(s.ncoll) / static_cast<double>(n);
-    snap.positions = xu.data();
+    std::vector<std::uint8_t> species;
+    std::vector<double> inv_mass;
+    std::array<double, max_species> species_w{};
+    if constexpr (F.masses) {
+      inv_mass.resize(n);
+      for (std::size_t a = 0; a < n; ++a) inv_mass[a] = s.p.inv_mass(s.slot[a]);
+      snap.inv_mass = inv_mass.data();
+    } else if constexpr (F.species) {
+      species.resize(n);
+      int ns = 1;
+      for (std::size_t a = 0; a < n; ++a) {
+        species[a] = static_cast<std::uint8_t>(s.p.species(s.slot[a]));
+        ns = std::max(ns, species[a] + 1);
+      }
+      for (int k = 0; k < max_species; ++k) species_w[k] = s.p.species_inv_mass(k);
+      snap.species = species.data();
+      snap.species_inv_mass = species_w.data();
+      snap.n_species = ns;
+    }
     obs.observe(snap);
   }
 

@@ -139,6 +139,16 @@ class FilteredScanner {
     }
   }
 
+
+ public:
+  /// Saves or restores the path boxes (the horizon walk holds scratch only).
+  template <class Archive>
+  void io(Archive& a) {
+    a.tag("filtered-scan");
+    a(pbox_, cbox_, box_levels_);
+  }
+
+ private:
   HorizonScanner<D, F> horizon_;  // the stencil walk
   std::vector<PBox> pbox_;        // each particle's path box,
   std::vector<PBox> cbox_;        //   each cell's union of its members' boxes

@@ -34,6 +34,8 @@ struct StatelessScanner {
   void left_cell(State<D, F>&, std::uint32_t) {}
   void permute(const std::vector<std::uint32_t>&) {}
   double bytes_per_particle(const State<D, F>&) const { return 0.0; }
+  template <class Archive>
+  void io(Archive&) {}  // scratch only
 };
 
 /// The slab scan (see the file comment).

@@ -93,6 +93,14 @@ struct State {
     scale_ref = fit >= 1.1 ? 1.0 : 0.9 * fit;
   }
 
+  /// Saves or restores the whole state (hypergas/checkpoint.hpp).
+  template <class Archive>
+  void io(Archive& a) {
+    a.tag("edmd-state");
+    a(p, image, cnt, ev, id, slot, cells, L, max_base, now, scale_ref, t_scale, rate, ncoll,
+      ncross, nstale, npairs, nscan);
+  }
+
   std::size_t size() const { return p.size(); }
   /// Current diameter scale (1 after compression).
   double diameter_scale() const { return scale_ref + rate * (now - t_scale); }

@@ -1,7 +1,11 @@
 // hypergas/analysis/histogram.hpp -- a counting histogram (GSL's gsl_histogram inside).
 //
 // Equal-width bins on [lo, hi); values below lo or at/above hi are counted as underflow and
-// overflow, so that densities and distances are normalised by every value added.
+// overflow, so that densities and distances are normalised by every value added. Values are
+// added one at a time, so a histogram of N values needs O(bins) memory, not O(N).
+//
+// Checkpoints: io() saves and restores the exact state (bin edges, counts, underflow,
+// overflow) through a checkpoint archive (hypergas/checkpoint.hpp).
 #pragma once
 
 #include <cstddef>
@@ -18,6 +22,8 @@ class Histogram {
   /// `bins` equal bins on [lo, hi) (units of the quantity). Throws InvalidInput unless
   /// lo < hi are finite and bins >= 1.
   Histogram(double lo, double hi, std::size_t bins);
+  /// One empty bin on [0, 1): a placeholder for containers, to be assigned or restored.
+  Histogram();
   ~Histogram();
   Histogram(const Histogram& other);
   Histogram& operator=(const Histogram& other);
@@ -39,13 +45,41 @@ class Histogram {
   /// count(i) / (total() * width): the estimated density (1 / units of x); 0 if empty.
   double density(std::size_t i) const;
 
+  /// Saves (checkpoint::Writer) or restores (checkpoint::Reader) the whole state: the bins()
+  /// + 1 edges as they are (not recomputed from lo and hi), the counts, underflow and
+  /// overflow. Restoring throws InvalidInput for an inconsistent state and then leaves
+  /// this histogram unchanged.
+  template <class Archive>
+  void io(Archive& a) {
+    a.tag("histogram");
+    std::vector<double> edges, counts;
+    double under = 0.0, over = 0.0;
+    if constexpr (Archive::saving) {
+      for (std::size_t i = 0; i < bins(); ++i) {
+        edges.push_back(lower(i));
+        counts.push_back(count(i));
+      }
+      edges.push_back(upper(bins() - 1));
+      under = underflow();
+      over = overflow();
+    }
+    a(edges, counts, under, over);
+    if constexpr (!Archive::saving) restore(edges, counts, under, over);
+  }
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  // Replaces the state by the given one (the inverse of what io() saves).
+  void restore(const std::vector<double>& edges, const std::vector<double>& counts, double under,
+               double over);
 };
 
-/// A histogram whose range covers `ref` up to tail probability 1e-7 on each open side
-/// (speed and energy start at 0), filled with `xs`.
+/// An empty histogram whose range covers `ref` up to tail probability 1e-7 on each open
+/// side (speed and energy start at 0), to be filled one value at a time.
+Histogram make_histogram(const MaxwellReference& ref, std::size_t bins = 50);
+
+/// make_histogram(ref, bins) filled with `xs`.
 Histogram make_histogram(const std::vector<double>& xs, const MaxwellReference& ref,
                          std::size_t bins = 50);
 

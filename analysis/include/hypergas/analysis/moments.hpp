@@ -4,10 +4,15 @@
 // m4 = D(D+2) (kT/m)^2, m6 = D(D+2)(D+4) (kT/m)^3, component kurtosis <v_x^4>/<v_x^2>^2 = 3.
 // Standard errors treat the particles as independent (exact for DSMC-like product states;
 // an underestimate where velocities are correlated).
+//
+// The moments come from power sums accumulated in one streaming pass (MomentSums), so they
+// need O(1) memory whatever the number of particles; the sums are RunningSums (sample.hpp),
+// read plain or compensated.
 #pragma once
 
 #include <cstddef>
 
+#include "hypergas/analysis/sample.hpp"
 #include "hypergas/observer.hpp"
 
 namespace hypergas::analysis {
@@ -31,8 +36,59 @@ struct Moments {
   Estimate m4_ratio;
 };
 
+/// The power sums behind Moments, fed one particle at a time (the streaming core of
+/// compute_moments; a caller that makes its own pass over the particles, such as
+/// MomentsRecorder, adds them as it goes). `m_mean` is the mean mass (mass units) of the
+/// particles that will be added: it weights w = v sqrt(m / m_mean).
+class MomentSums {
+ public:
+  MomentSums(int dim, double m_mean) : dim_(dim), m_mean_(m_mean) {}
+
+  /// Adds one particle: velocity v[0..dim) (velocity units), inverse mass inv_m (1/mass
+  /// units, finite and > 0). Returns |v|^2, summed over components in order.
+  double add(const double* v, double inv_m) {
+    double vv = 0.0;
+    for (int k = 0; k < dim_; ++k) vv += v[k] * v[k];
+    const double f = 1.0 / (inv_m * m_mean_);  // w = v sqrt(f)
+    const double v4 = vv * vv, v6 = v4 * vv;
+    s2_.add(vv);
+    s4_.add(v4);
+    s6_.add(v6);
+    s8_.add(v4 * v4);
+    s12_.add(v6 * v6);
+    const double ww4 = v4 * f * f;
+    w4_.add(ww4);
+    w8_.add(ww4 * ww4);
+    const double xx = v[0] * v[0] * f;
+    x2_.add(xx);
+    x4_.add(xx * xx);
+    x6_.add(xx * xx * xx);
+    x8_.add(xx * xx * xx * xx);
+    twice_e_.add(vv / inv_m);
+    ++n_;
+    return vv;
+  }
+
+  /// Particles added so far.
+  std::size_t count() const { return n_; }
+
+  /// The moments of the particles added, with sums read `how`. Throws InvalidInput if
+  /// fewer than 2 were added.
+  Moments result(Summation how = Summation::compensated) const;
+
+ private:
+  int dim_;
+  double m_mean_;
+  std::size_t n_ = 0;
+  // Raw |v|^2k (and squares), mass-weighted |w|^4, w_x^2k, and sum m v^2.
+  RunningSum s2_, s4_, s6_, s8_, s12_, w4_, w8_, x2_, x4_, x6_, x8_, twice_e_;
+};
+
 /// Moments of `species` (all particles for -1; pooled values are mass-weighted for
-/// kurtosis_x and m4_ratio, raw for m2, m4, m6). Throws InvalidInput if there are < 2.
-Moments compute_moments(const Snapshot& s, int species = -1);
+/// kurtosis_x and m4_ratio, raw for m2, m4, m6), all sums (the mean mass included) read
+/// `how`. One pass for the mean mass, one for the power sums; O(1) memory. Throws
+/// InvalidInput if there are < 2.
+Moments compute_moments(const Snapshot& s, int species = -1,
+                        Summation how = Summation::compensated);
 
 }  // namespace hypergas::analysis

@@ -11,30 +11,70 @@
 //   m4_ratio, m4_ratio_err   <w^4> / (D(D+2)(kT/m_mean)^2) and its error (MB: 1)
 //   kT                       2 E_kin / (D n), energy units: the reference temperature
 //   l1_speed, kl_speed       L1 distance and KL divergence (nats) of the speed histogram
-//   ks_p_speed               KS p-value of the speeds against MB at kT (conservative)
+//   ks_p_speed               KS p-value of the speeds against MB at kT (see below)
 //   chi2_p_speed             chi-square p-value of the speed histogram (1 fitted parameter)
 //   kT_0, kT_1, ...          per-species temperature, energy units (mixtures only)
 // Pooled speeds are mass-weighted (see sample.hpp). The recorder keeps the speed histograms
 // of the last snapshot (pooled and, for mixtures, per species) for speed_histogram.csv.
+//
+// Cost per snapshot of n particles: three streaming passes over the snapshot's arrays
+// (validation; counts, masses and energies; moments, histograms and the KS sample), O(n)
+// time and, besides the KS sample, O(bins + species) memory: no per-particle copy. The
+// target is n ~ 1e7 in a process whose velocities are most of its memory.
+//
+// The KS test needs its sample sorted, so it is the one statistic that keeps values:
+// min(n, ks_cap) doubles.
+//  - n <= ks_cap: all n speeds, as before.
+//  - n > ks_cap: a uniform random subsample of exactly ks_cap particles without replacement
+//    (SequentialSample, statistics.hpp). Snapshot number j (0, 1, ... in order of
+//    observation) draws it from its own stream Rng(ks_seed, ks_stream).split(j), so the
+//    subsample is reproducible, independent of the engine's random numbers and of the
+//    sizes of earlier snapshots. ks_p_speed is then the p-value of the same null hypothesis
+//    (the speeds are MB at the snapshot's kT) tested with ks_cap samples: under it, it is
+//    uniform as before; its power is that of ks_cap samples, not of n (the smallest
+//    deviation of the speed CDF it resolves is ~1.36 / sqrt(ks_cap), the 5% critical value
+//    of the KS statistic: 1.4e-3 for the default cap); and it varies with the subsample, so
+//    another seed gives another p.
+//    Because kT comes mostly from particles outside the subsample, the test is then close
+//    to exact rather than conservative.
+// Histograms, distances, the chi-square test and the moments always use every particle.
+//
+// Sums over particles (moments, kT, mean masses): for n <= ks_cap they are read as plain
+// left-to-right double sums, which reproduce the files of earlier versions bit for bit;
+// for n > ks_cap they are compensated (sample.hpp), accurate to a few eps for any n. The
+// two differ by the rounding error of the plain sum, ~sqrt(n) eps relative.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "hypergas/analysis/histogram.hpp"
 #include "hypergas/analysis/maxwell.hpp"
 #include "hypergas/observer.hpp"
+#include "hypergas/rng.hpp"
 
 namespace hypergas::analysis {
 
 class MomentsRecorder final : public Observer {
  public:
-  /// `bins` bins for the speed histograms (>= 1).
-  explicit MomentsRecorder(std::size_t bins = 50);
+  /// Default largest KS sample (doubles kept per snapshot: 8 MB).
+  static constexpr std::size_t default_ks_cap = 1'000'000;
+  /// Default seed of the KS subsample stream.
+  static constexpr std::uint64_t default_ks_seed = 0x6b735f63617073ULL;
+  /// Stream number of the KS subsample (with the seed above): one no engine uses.
+  static constexpr std::uint64_t ks_stream = 0x4d6f6d656e74734bULL;
+
+  /// `bins` bins for the speed histograms (>= 1); a KS test on at most `ks_cap` speeds
+  /// (>= 1; a uniform subsample above it) drawn with seed `ks_seed`. Throws InvalidInput
+  /// for bins or ks_cap < 1.
+  explicit MomentsRecorder(std::size_t bins = 50, std::size_t ks_cap = default_ks_cap,
+                           std::uint64_t ks_seed = default_ks_seed);
 
   /// Records one row; throws InvalidInput for an unreadable snapshot or one whose number of
-  /// species differs from the first.
+  /// species differs from the first (nothing is recorded then).
   void observe(const Snapshot& s) override;
 
   /// Column names, fixed by the first snapshot (the per-species columns need it).
@@ -43,6 +83,8 @@ class MomentsRecorder final : public Observer {
   const std::vector<std::vector<double>>& rows() const { return rows_; }
   /// The values of one column over time; throws InvalidInput for an unknown name.
   std::vector<double> column(const std::string& name) const;
+  /// Largest KS sample (particles).
+  std::size_t ks_cap() const { return ks_cap_; }
 
   /// Writes moments.csv (atomically). Throws InvalidInput if nothing was observed.
   void write_moments_csv(const std::string& path) const;
@@ -51,8 +93,26 @@ class MomentsRecorder final : public Observer {
   /// particles (species = -1, mass-weighted) or of one species (mixtures).
   void write_speed_histogram_csv(const std::string& path, int species = -1) const;
 
+  /// Saves or restores every data member through a checkpoint archive
+  /// (hypergas/checkpoint.hpp): a restored recorder continues exactly as the saved one
+  /// would, KS subsamples included. The saved bins and KS cap and seed replace the
+  /// constructor's. Restoring throws InvalidInput for an inconsistent state.
+  template <class Archive>
+  void io(Archive& a) {
+    a.tag("moments-recorder");
+    a(bins_, ks_cap_, ks_rng_, n_species_, dim_, columns_, rows_, last_histograms_, last_refs_);
+    if constexpr (!Archive::saving) check_restored();
+  }
+
  private:
+  static_assert(std::is_trivially_copyable_v<Rng>, "io() saves the KS stream as raw bytes");
+  static_assert(std::is_trivially_copyable_v<MaxwellReference>);
+
+  void check_restored() const;
+
   std::size_t bins_;
+  std::size_t ks_cap_;
+  Rng ks_rng_;  // root of the KS subsample streams; snapshot j uses ks_rng_.split(j)
   int n_species_ = 0;
   std::vector<std::string> columns_;
   std::vector<std::vector<double>> rows_;

@@ -22,7 +22,9 @@ namespace hypergas::analysis {
 void write_file_atomic(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 /// A CSV file: a header line of `columns` joined by commas, then one line per row (each
-/// row exactly columns.size() values, 17 significant digits, "nan"/"inf" as such).
+/// row exactly columns.size() values, 17 significant digits; a value that is not finite is
+/// written as an empty field, the CSV mark of a missing value: "undefined here", such as the
+/// temperature of an absent species or a threshold never reached).
 void write_csv(const std::string& path, const std::vector<std::string>& columns,
                const std::vector<std::vector<double>>& rows);
 

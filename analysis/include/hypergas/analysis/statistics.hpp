@@ -4,12 +4,18 @@
 // (underflow and overflow are two more bins) against the reference's exact bin
 // probabilities P_i = cdf(hi_i) - cdf(lo_i). Both distances are biased upward by sampling
 // noise: for N samples and B bins, E[L1] ~ sum_i sqrt(2 P_i / (pi N)) and E[KL] ~ (B-1)/(2N).
+//
+// The histogram statistics need O(bins) memory; the KS test needs its sample (sorted).
+// SequentialSample draws a uniform subsample in one streaming pass, for a KS test of a
+// sample too large to keep (see MomentsRecorder).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "hypergas/analysis/histogram.hpp"
 #include "hypergas/analysis/maxwell.hpp"
+#include "hypergas/rng.hpp"
 
 namespace hypergas::analysis {
 
@@ -37,8 +43,37 @@ TestResult chi_square_test(const Histogram& h, const MaxwellReference& ref,
 /// Two-sided one-sample Kolmogorov–Smirnov test of `sample` against ref.cdf: statistic
 /// D_n = sup |F_n - F|, p from the asymptotic Kolmogorov distribution with Stephens' (1970)
 /// finite-n correction (accurate to ~1% in p for n >= 35). With kT estimated from the same
-/// sample the test is conservative (p too large; Lilliefors 1967).
+/// sample the test is conservative (p too large; Lilliefors 1967). The sample is taken by
+/// value and sorted: pass it with std::move where the caller no longer needs it, to avoid
+/// a copy.
 TestResult ks_test(std::vector<double> sample, const MaxwellReference& ref);
+
+/// Selection sampling (Knuth, TAOCP vol. 2, sec. 3.4.2, Algorithm S): visits the indices
+/// 0 .. n-1 in increasing order and takes each with probability (still needed) / (still
+/// left), which takes exactly min(k, n) of them, every subset of that size with the same
+/// probability (a uniform sample without replacement). O(1) memory; one unbiased random
+/// integer (Rng::below) per index visited while 0 < needed < left, none when k >= n.
+class SequentialSample {
+ public:
+  /// k of n indices, random integers from `rng`.
+  SequentialSample(std::uint64_t n, std::uint64_t k, Rng rng)
+      : left_(n), needed_(k < n ? k : n), rng_(rng) {}
+
+  /// Whether the next index is taken. Call it once per index, in order, n times at most
+  /// (after n calls it returns false).
+  bool take() {
+    if (left_ == 0) return false;
+    const bool t = needed_ >= left_ || (needed_ > 0 && rng_.below(left_) < needed_);
+    --left_;
+    needed_ -= t;
+    return t;
+  }
+
+ private:
+  std::uint64_t left_;    // indices not yet visited
+  std::uint64_t needed_;  // indices still to take
+  Rng rng_;
+};
 
 /// Kolmogorov distribution upper tail Q(lambda) = 2 sum_k (-1)^(k-1) exp(-2 k^2 lambda^2).
 double kolmogorov_q(double lambda);

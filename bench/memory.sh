@@ -8,14 +8,19 @@ H=${1:-build/sim/hypergas}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 peak() {  # prints the peak RSS in bytes of: hypergas run ARGS --out DIR --json
-  "$H" run "$@" --out "$tmp/run" --json | tail -1 |
+  local out
+  out=$(mktemp -d -p "$tmp")
+  "$H" run "$@" --out "$out" --json | tail -1 |
     python3 -c 'import json,sys; j=json.load(sys.stdin); print(j["peak_rss_bytes_per_particle"]*j["n"], j["engine_bytes_per_particle"])'
-  rm -rf "$tmp/run"
+  rm -rf "$out"
 }
 printf '%-58s %12s %14s %12s\n' "run" "n" "peak B/part." "engine B/p."
 while IFS='|' read -r label n args; do
-  read -r small _ < <(peak $args --n 1000)
-  read -r big engine < <(peak $args --n "$n")
+  small=$(peak $args --n 1000)
+  big=$(peak $args --n "$n")
+  engine=${big#* }
+  small=${small% *}
+  big=${big% *}
   python3 -c "print(f'{\"$label\":<58s} {$n:>12d} {($big - $small) / $n:>14.1f} {$engine:>12.1f}')"
 done <<'LIST'
 dsmc 3D hard spheres, --until 0.2|10000000|--engine dsmc --dim 3 --until 0.2

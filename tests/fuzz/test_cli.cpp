@@ -18,17 +18,19 @@
 // The generator is seeded (HYPERGAS_FUZZ_SEED, default below) and every case is derived from
 // the seed, its area and its index, so a failure reproduces: its message gives the seed, the
 // case and the command line. Mutations that would make a valid run long (more than ~2000
-// particles, many samples, large bench sizes, the full `report`) are replaced by others
-// (`too_costly`), so the test takes well under a minute. HYPERGAS_FUZZ_CASES sets the number
-// of cases (default 3000, split over the areas; fewer for sanitizer builds). Each invocation
-// gets 20 s (HYPERGAS_FUZZ_TIMEOUT_S) before it is killed and counted as a hang. The resume
-// fixtures are real checkpoints, taken by killing a run as soon as its single checkpoint
-// appears, so their content does not depend on timing. gnuplot is hidden (PATH) from most
-// invocations, so that PNG plotting does not dominate the run time.
+// particles, many samples, EDMD packings near jamming, large bench sizes, the full `report`)
+// are replaced by others (`too_costly`), so the test takes well under a minute.
+// HYPERGAS_FUZZ_CASES sets the number of cases (default 4000, split over the areas; fewer for
+// sanitizer builds); HYPERGAS_FUZZ_VERBOSE=1 prints each area's exit codes and time. Each
+// invocation gets 20 s (HYPERGAS_FUZZ_TIMEOUT_S) before it is killed and counted as a hang.
+// The resume fixtures are real checkpoints, taken by killing a run as soon as its single
+// checkpoint appears, so their content does not depend on timing. gnuplot is hidden (PATH)
+// from most invocations, so that PNG plotting does not dominate the run time.
 //
-// The test is deterministic: its false-failure probability is 0. Each failure is reported
-// once per distinct kind (check, mutation, option, exit code) with a command line that
-// reproduces it; the test case then fails with the total count.
+// The test is deterministic: its false-failure probability is 0. Each distinct kind of
+// failure (check, subcommand, exit code, message) is reported once, with a command line that
+// reproduces it, its count and the mutations that led to it; the test case then fails with
+// the total count.
 #include <catch2/catch.hpp>
 
 #ifdef HYPERGAS_CLI_PATH
@@ -106,7 +108,9 @@ struct Rng {
   std::mt19937_64 g;
   /// Uniform in 0..n-1.
   std::size_t below(std::size_t n) { return n == 0 ? 0 : static_cast<std::size_t>(g() % n); }
-  int range(int lo, int hi) { return lo + static_cast<int>(below(static_cast<std::size_t>(hi - lo + 1))); }
+  int range(int lo, int hi) {
+    return lo + static_cast<int>(below(static_cast<std::size_t>(hi - lo + 1)));
+  }
   double unit() { return static_cast<double>(g() >> 11) * 0x1.0p-53; }
   bool chance(double p) { return unit() < p; }
   template <class T>
@@ -438,6 +442,13 @@ bool contains_nocase(const std::string& s, const std::string& part) {
   return l.find(part) != std::string::npos;
 }
 
+/// The jamming packing of hard spheres in D dimensions (edmd/box.hpp): the command refuses
+/// packings at or above it.
+double jamming(int d) {
+  static const double j[] = {1.0, 0.82, 0.64, 0.46, 0.31, 0.20};
+  return j[d - 1];
+}
+
 constexpr double max_n = 2147483648.0;  // 2^31, the largest --n the command accepts
 constexpr double tiny = 1e-300;
 
@@ -465,7 +476,18 @@ bool run_costly(const Args& a, double n_cap = 2000, double until_cap = 20,
   const double replicas = std::max(1.0, *threads / 2);
   if (*n * samples * replicas > 1e6) return true;
   if (*n * *until * replicas > 2e4 * (n_cap / 2000)) return true;
-  if (edmd && *n * *until * (2 + 60 * *packing) > 2e5) return true;
+  // EDMD collisions per particle and time grow as 1 / (1 - packing / jamming) (1D: exactly).
+  if (edmd) {
+    double rate = 2 + 60 * *packing;
+    const auto rate_in = [&](int d) {
+      if (*packing < jamming(d))
+        rate = std::max(rate, (2 + 60 * *packing) / (1 - *packing / jamming(d)));
+    };
+    rate_in(3);  // the default dimension
+    for (const auto& ds : values_of(a, {"--dim", "-d"}))
+      if (const auto d = lenient(ds); d && *d >= 1 && *d <= 6) rate_in(static_cast<int>(*d));
+    if (*n * *until * rate > 2e5) return true;
+  }
   if (edmd && *dim >= 6 && (*n > 150 || *until > 2)) return true;
   return false;
 }
@@ -654,9 +676,12 @@ std::string mutate(Rng& r, Command& c, const Spec& spec) {
     const char* name = which == 0 ? "--engine" : which == 1 ? "--model" : "--init";
     const auto& pool = which == 0 ? engine_names : which == 1 ? model_names : init_names;
     std::string v = r.chance(0.85) ? r.pick(pool) : random_text(r);
-    auto it = std::find_if(c.opts.begin(), c.opts.end(), [&](const Opt& o) { return o.name == name; });
-    if (it != c.opts.end()) it->value = v;
-    else c.opts.insert(c.opts.begin() + static_cast<long>(r.below(c.opts.size() + 1)), Opt{name, v});
+    auto it =
+        std::find_if(c.opts.begin(), c.opts.end(), [&](const Opt& o) { return o.name == name; });
+    if (it != c.opts.end())
+      it->value = v;
+    else
+      c.opts.insert(c.opts.begin() + static_cast<long>(r.below(c.opts.size() + 1)), Opt{name, v});
     return std::string("enum ") + name;
   }
   if (kind < 50) {  // an option given twice
@@ -756,11 +781,6 @@ const std::vector<std::string> run_numeric{
 const std::vector<std::string> known_inits{"maxwell", "delta", "cube", "beams", "bimaxwell",
                                            "bkw", "two-temp"};
 
-double jamming(int d) {
-  static const double j[] = {1.0, 0.82, 0.64, 0.46, 0.31, 0.20};
-  return j[d - 1];
-}
-
 /// Optional valid extras shared by both engines' run commands.
 void add_common_run_extras(Rng& r, Command& c, double until) {
   if (r.chance(0.2)) c.opts.push_back({"--init", r.pick(known_inits)});
@@ -838,7 +858,8 @@ Command bench_cmd(Rng& r) {
              {"--n", std::to_string(r.pick(std::vector<int>{100, 200}))},
              {"--reps", "1"},
              {"--min-collisions", "1000"}}};
-  if (r.chance(0.2)) c.opts.push_back({"--model", r.pick(std::vector<std::string>{"hs", "maxwell", "vhs"})});
+  if (r.chance(0.2))
+    c.opts.push_back({"--model", r.pick(std::vector<std::string>{"hs", "maxwell", "vhs"})});
   if (r.chance(0.2)) c.opts.push_back({"--packing", fmt_double(0.05 + 0.1 * r.unit(), "%.3f")});
   if (r.chance(0.1)) c.opts.push_back({"--threads", "2"});
   if (r.chance(0.2)) c.opts.push_back({"--seed", std::to_string(r.below(1000))});
@@ -866,8 +887,9 @@ Spec scene_spec() {
 }
 
 Command report_cmd(Rng& r) {
-  Command c{{"report"}, {{"--threads", r.pick(std::vector<std::string>{"0", "65", "-1", "nan", "x"})},
-                        {"--out", "out"}}};
+  Command c{{"report"},
+            {{"--threads", r.pick(std::vector<std::string>{"0", "65", "-1", "nan", "x"})},
+             {"--out", "out"}}};
   if (r.chance(0.5)) c.opts.push_back({"--quick", std::nullopt});
   return c;
 }
@@ -913,7 +935,8 @@ std::vector<std::string> check(const Case& c, const Outcome& o, const fs::path& 
     }
     for (const auto& [rel, sig] : before)
       if (!after.count(rel) && !is_staging(rel)) left += " -" + rel;
-    if (!left.empty()) p.push_back("exit " + std::to_string(o.code) + " changed files:" + clip(left, 300));
+    if (!left.empty())
+      p.push_back("exit " + std::to_string(o.code) + " changed files:" + clip(left, 300));
   }
   const std::string w = nonfinite_word(o.out, c.args);
   if (!w.empty()) p.push_back("nan/inf on stdout: " + w);
@@ -1005,7 +1028,8 @@ class Failures {
   void report() const {
     std::vector<const std::pair<const std::string, Kind>*> v;
     for (const auto& e : kinds_) v.push_back(&e);
-    std::sort(v.begin(), v.end(), [](auto* a, auto* b) { return a->second.order < b->second.order; });
+    std::sort(v.begin(), v.end(),
+              [](auto* a, auto* b) { return a->second.order < b->second.order; });
     for (std::size_t i = 0; i < v.size() && i < 30; ++i) {
       const Kind& k = v[i]->second;
       std::string whats;
@@ -1196,7 +1220,8 @@ std::optional<Fixture> take_checkpoint(const std::string& name, Args args, const
 
 Command stored_run(const Fixture& f) {
   Command c;
-  for (std::size_t i = 0; i + 1 < f.args.size(); i += 2) c.opts.push_back({f.args[i], f.args[i + 1]});
+  for (std::size_t i = 0; i + 1 < f.args.size(); i += 2)
+    c.opts.push_back({f.args[i], f.args[i + 1]});
   return c;
 }
 
@@ -1257,7 +1282,8 @@ ResumeCase resume_case(Rng& r, const std::vector<Fixture>& fx) {
     rc.c.what = "resume truncated checkpoint";
   } else if (kind < 38) {
     file = f.file;
-    for (int k = r.range(1, 4); k > 0; --k) file[r.below(file.size())] ^= static_cast<char>(1 + r.below(255));
+    for (int k = r.range(1, 4); k > 0; --k)
+      file[r.below(file.size())] ^= static_cast<char>(1 + r.below(255));
     rc.c.what = "resume corrupted checkpoint";
   } else if (kind < 42) {
     file = f.file + random_bytes(r, 64) + "x";
@@ -1306,7 +1332,8 @@ ResumeCase resume_case(Rng& r, const std::vector<Fixture>& fx) {
   } else if (kind < 94) {
     // Bytes of the state changed, framed validly (a forged file): refused or run, not crash.
     std::string rest = f.rest;
-    for (int k = r.range(1, 3); k > 0; --k) rest[r.below(rest.size())] ^= static_cast<char>(1 << r.below(8));
+    for (int k = r.range(1, 3); k > 0; --k)
+      rest[r.below(rest.size())] ^= static_cast<char>(1 << r.below(8));
     payload = header_payload(f.tag, f.id, f.args) + rest;
     rc.c.what = "resume " + f.name + " forged state";
   } else if (kind < 98) {
@@ -1393,7 +1420,8 @@ TEST_CASE("random byte strings as arguments keep the contract", "[fuzz]") {
         a.push_back(r.chance(0.7) ? random_bytes(r) : random_text(r, 20));
       if (r.chance(0.3)) {  // mixed with a valid run's options
         const Args base = dsmc_run(r).flatten();
-        a.insert(a.begin() + static_cast<long>(r.below(a.size() + 1)), base.begin() + 1, base.end());
+        a.insert(a.begin() + static_cast<long>(r.below(a.size() + 1)), base.begin() + 1,
+                 base.end());
       }
       if (!too_costly(a)) return Case{a, "random bytes"};
     }

@@ -43,8 +43,8 @@ class Cells {
   void build(double L, double min_width, std::size_t n, double per_particle = 2.0) {
     m_ = static_cast<int>(std::floor(L / min_width * (1.0 - 1e-12)));
     if (m_ < 2)
-      throw InvalidInput("box side " + std::to_string(L) + " is below two contact distances (" +
-                         std::to_string(min_width) + "): enlarge N or lower the packing");
+      throw InvalidInput("box side " + std::to_string(L) + " is below twice the contact distance " +
+                         std::to_string(min_width) + ": enlarge N or lower the packing");
     // Cap the number of cells (memory).
     while (m_ > 3 &&
            std::pow(static_cast<double>(m_), D) > per_particle * static_cast<double>(n) + 64.0)

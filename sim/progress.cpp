@@ -46,8 +46,9 @@ void Progress::update(double done) {
   const int filled = static_cast<int>(f * width);
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double eta = f > 0.0 ? elapsed * (1.0 - f) / f : 0.0;
-  fmt::print(stderr, "\r{} [{}{}] {:3.0f}%  eta {:.0f} s ", label_, std::string(filled, '#'),
-             std::string(width - filled, '.'), 100.0 * f, eta);
+  fmt::print(stderr, "\r{} [{}{}] {:3.0f}%  t = {:.4g} of {:.4g}  eta {:.0f} s ", label_,
+             std::string(filled, '#'), std::string(width - filled, '.'), 100.0 * f, done, total_,
+             eta);
   std::fflush(stderr);
   drawn_ = true;
 }

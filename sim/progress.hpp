@@ -6,7 +6,8 @@
 
 namespace hypergas::cli {
 
-/// Shows `label [#####.....]  42%  eta 3 s` on one stderr line, redrawn at most ten times
+/// Shows `label [#####.....]  42%  t = 4.2 of 10  eta 3 s` (the engine's time and the end
+/// time, and the wall time left at the rate so far) on one stderr line, redrawn at most ten times
 /// a second; does nothing at all when stderr is not a terminal (pipes, files, tests).
 class Progress {
  public:

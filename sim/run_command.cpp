@@ -6,6 +6,7 @@
 // place. Any exception before the commit leaves the folder as it was, except for the
 // checkpoint (checkpoint.hgck, written atomically during the run), which a finished run
 // removes.
+#include <chrono>
 #include <filesystem>
 
 #include <fmt/core.h>
@@ -27,13 +28,17 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume) {
   if (o.threads == 1)
     ctx.checkpoints = Checkpointer(out.dir(), o.checkpoint_every, o.checkpoint_wall_seconds());
   ctx.resume = resume;
-  const RunRecord rec = simulate(o, true, ctx);
-  const analysis::JsonObject& summary = rec.summary;
+  RunRecord rec = simulate(o, true, ctx);
+  // CSV and plots first, so that summary.json can say how long they took (output_s).
+  const auto t0 = std::chrono::steady_clock::now();
   rec.moments.write_moments_csv(out.staged("moments.csv").string());
   rec.moments.write_speed_histogram_csv(out.staged("speed_histogram.csv").string());
   if (rec.vacf && rec.vacf->frames() >= 2) rec.vacf->write_csv(out.staged("vacf.csv").string());
-  analysis::write_json(out.staged("summary.json").string(), summary);
   studies::run_gnuplot(run_plot_script(rec.vacf && rec.vacf->frames() >= 2), out.staging());
+  rec.summary.emplace_back(
+      "output_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  const analysis::JsonObject& summary = rec.summary;
+  analysis::write_json(out.staged("summary.json").string(), summary);
   out.commit();
   // The run is complete: its checkpoint would only continue a finished run.
   std::error_code ec;

@@ -114,6 +114,16 @@ MaxwellReference reference(const Snapshot& s, Quantity q, int species, Summation
 
 SnapshotTotals::SnapshotTotals(const Snapshot& s)
     : dim_(s.dim), t_(1 + static_cast<std::size_t>(s.n_species)) {
+  if (!s.species && !s.inv_mass) {
+    // Unit masses, one species: m = 1 and m v^2 = v^2 exactly, so the mass sum is n and the
+    // energy sum the same additions as below, done once (a third of the pass at N = 1e7).
+    Totals t;
+    for (std::size_t i = 0; i < s.n; ++i) t.twice_e.add(speed_sq(s, i));
+    t.mass = RunningSum::exact(static_cast<double>(s.n));
+    t.n = s.n;
+    for (Totals& x : t_) x = t;
+    return;
+  }
   Totals& all = t_[0];
   for (std::size_t i = 0; i < s.n; ++i) {
     Totals& mine = t_[1 + (s.species ? s.species[i] : 0u)];

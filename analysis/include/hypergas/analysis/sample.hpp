@@ -39,6 +39,13 @@ enum class Summation {
 /// sum `s += x` in the same order. O(1) memory, six flops per term, no branch.
 class RunningSum {
  public:
+  RunningSum() = default;
+  /// A sum known exactly (e.g. n unit masses): plain value x, no rounding error.
+  static RunningSum exact(double x) {
+    RunningSum r;
+    r.s_ = x;
+    return r;
+  }
   void add(double x) {
     const double t = s_ + x;
     const double z = t - s_;

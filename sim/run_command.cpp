@@ -40,9 +40,11 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume) {
   const analysis::JsonObject& summary = rec.summary;
   analysis::write_json(out.staged("summary.json").string(), summary);
   out.commit();
-  // The run is complete: its checkpoint would only continue a finished run.
+  // The run is complete: its checkpoint would only continue a finished run (and a .tmp left
+  // by a process killed while writing one is garbage).
   std::error_code ec;
   std::filesystem::remove(out.dir() / Checkpointer::file_name, ec);
+  std::filesystem::remove(out.dir() / (std::string(Checkpointer::file_name) + ".tmp"), ec);
 
   const auto f = [&](const char* k) { return summary_field(summary, k); };
   fmt::print("{} D={} model={} n={} seed={}: {} collisions in {} s ({} collisions/s)\n",

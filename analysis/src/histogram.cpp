@@ -53,7 +53,15 @@ void Histogram::add(double x) {
   } else if (x >= h->range[h->n]) {
     impl_->over += 1.0;
   } else {
-    gsl_histogram_increment(h, x);
+    // The bin GSL's gsl_histogram_increment finds, found here without its call and checks
+    // (a tenth of a snapshot's analysis at N = 1e7): the linear guess for equal bins, then
+    // the unique i with range[i] <= x < range[i + 1].
+    const std::size_t n = h->n;
+    const double* r = h->range;
+    auto i = static_cast<std::size_t>((x - r[0]) / (r[n] - r[0]) * static_cast<double>(n));
+    if (!(i < n && x >= r[i] && x < r[i + 1]))
+      i = static_cast<std::size_t>(std::upper_bound(r, r + n + 1, x) - r) - 1;
+    h->bin[i] += 1.0;
   }
 }
 

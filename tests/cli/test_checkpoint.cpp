@@ -90,6 +90,7 @@ void kill_and_resume(const std::vector<std::string>& run_args, std::uint64_t see
   CHECK(physics_summary(s.path() / "ref" / "summary.json") ==
         physics_summary(s.path() / "cut" / "summary.json"));
   CHECK(!fs::exists(s.path() / "cut" / "checkpoint.hgck"));
+  CHECK(!fs::exists(s.path() / "cut" / "checkpoint.hgck.tmp"));
   for (const auto& e : fs::directory_iterator(s.path() / "cut"))
     CHECK(e.path().filename().string().rfind(".hypergas-staging", 0) != 0);
 }

@@ -46,10 +46,23 @@ class MomentSums {
 
   /// Adds one particle: velocity v[0..dim) (velocity units), inverse mass inv_m (1/mass
   /// units, finite and > 0). Returns |v|^2, summed over components in order.
-  double add(const double* v, double inv_m) {
+  double add(const double* v, double inv_m) { return add_impl<false>(v, inv_m); }
+  /// add(v, 1.0) without its divisions (the same values bit for bit): unit-mass gases.
+  double add_unit_mass(const double* v) { return add_impl<true>(v, 1.0); }
+
+  /// Particles added so far.
+  std::size_t count() const { return n_; }
+
+  /// The moments of the particles added, with sums read `how`. Throws InvalidInput if
+  /// fewer than 2 were added.
+  Moments result(Summation how = Summation::compensated) const;
+
+ private:
+  template <bool Unit>
+  double add_impl(const double* v, double inv_m) {
     double vv = 0.0;
     for (int k = 0; k < dim_; ++k) vv += v[k] * v[k];
-    const double f = 1.0 / (inv_m * m_mean_);  // w = v sqrt(f)
+    const double f = Unit ? unit_f_ : 1.0 / (inv_m * m_mean_);  // w = v sqrt(f)
     const double v4 = vv * vv, v6 = v4 * vv;
     s2_.add(vv);
     s4_.add(v4);
@@ -64,21 +77,14 @@ class MomentSums {
     x4_.add(xx * xx);
     x6_.add(xx * xx * xx);
     x8_.add(xx * xx * xx * xx);
-    twice_e_.add(vv / inv_m);
+    twice_e_.add(Unit ? vv : vv / inv_m);
     ++n_;
     return vv;
   }
 
-  /// Particles added so far.
-  std::size_t count() const { return n_; }
-
-  /// The moments of the particles added, with sums read `how`. Throws InvalidInput if
-  /// fewer than 2 were added.
-  Moments result(Summation how = Summation::compensated) const;
-
- private:
   int dim_;
   double m_mean_;
+  double unit_f_ = 1.0 / (1.0 * m_mean_);  // f of a unit mass
   std::size_t n_ = 0;
   // Raw |v|^2k (and squares), mass-weighted |w|^4, w_x^2k, and sum m v^2.
   RunningSum s2_, s4_, s6_, s8_, s12_, w4_, w8_, x2_, x4_, x6_, x8_, twice_e_;

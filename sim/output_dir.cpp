@@ -5,6 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
+#include <cerrno>
 #include <fcntl.h>
 #include <sys/file.h>
 #include <unistd.h>
@@ -63,6 +64,21 @@ OutputDir::OutputDir(fs::path dir) : dir_(std::move(dir)) {
     created_.push_back(p);
   }
   if (!fs::is_directory(dir_, ec)) unwritable(dir_, "it exists and is not a folder");
+  // One process per output folder: a second run or resume on the same folder would write
+  // the same checkpoint and files. The lock is on the folder itself (no file to leave
+  // behind) and the kernel drops it when the process ends, however it ends.
+  dir_fd_ = ::open(dir_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir_fd_ < 0 || ::flock(dir_fd_, LOCK_EX | LOCK_NB) != 0) {
+    const bool busy = dir_fd_ >= 0 && errno == EWOULDBLOCK;
+    if (dir_fd_ >= 0) ::close(dir_fd_);
+    dir_fd_ = -1;
+    for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, ec);
+    created_.clear();
+    if (busy)
+      throw InvalidInput(fmt::format("output folder '{}' is in use by another hypergas process",
+                                     dir_.string()));
+    unwritable(dir_, "it cannot be opened");
+  }
   remove_stale_staging(dir_);
   staging_ = dir_ / fmt::format(".hypergas-staging-{}", ::getpid());
   fs::remove_all(staging_, ec);
@@ -71,6 +87,9 @@ OutputDir::OutputDir(fs::path dir) : dir_(std::move(dir)) {
     if (lock_fd_ >= 0) ::flock(lock_fd_, LOCK_EX | LOCK_NB);
   }
   if (lock_fd_ < 0 || ec || ::access(staging_.c_str(), W_OK) != 0) {
+    if (lock_fd_ >= 0) ::close(lock_fd_);
+    if (dir_fd_ >= 0) ::close(dir_fd_);
+    lock_fd_ = dir_fd_ = -1;
     fs::remove_all(staging_, ec);
     for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, ec);
     created_.clear();
@@ -82,6 +101,7 @@ OutputDir::~OutputDir() {
   std::error_code ec;
   if (lock_fd_ >= 0) ::close(lock_fd_);
   fs::remove_all(staging_, ec);
+  if (dir_fd_ >= 0) ::close(dir_fd_);
   if (done_) return;
   // Remove created folders innermost first, and only if still empty (never a user's file).
   for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, ec);

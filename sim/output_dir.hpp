@@ -16,8 +16,9 @@ namespace hypergas::cli {
 class OutputDir {
  public:
   /// Creates `dir` (and missing parents), checks that files can be created in it and makes
-  /// the staging folder (removing those left by processes that no longer run). Throws
-  /// InvalidInput naming the folder and the reason otherwise.
+  /// the staging folder (removing those left by processes that no longer run). Holds a lock
+  /// on the folder while it lives. Throws InvalidInput naming the folder and the reason
+  /// otherwise, also when another hypergas process holds the folder.
   explicit OutputDir(std::filesystem::path dir);
   OutputDir(const OutputDir&) = delete;
   OutputDir& operator=(const OutputDir&) = delete;
@@ -43,6 +44,7 @@ class OutputDir {
   std::vector<std::string> committed_;
   bool done_ = false;
   int lock_fd_ = -1;  // flock held on staging_/.lock while this object lives
+  int dir_fd_ = -1;   // flock held on dir_ itself: one process per output folder
 };
 
 }  // namespace hypergas::cli

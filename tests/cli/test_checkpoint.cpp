@@ -201,3 +201,21 @@ TEST_CASE("resume refuses corrupted, truncated, foreign and missing checkpoints"
   INFO(ok.err);
   CHECK(ok.code == 0);
 }
+
+TEST_CASE("a second process on a folder in use is refused", "[checkpoint]") {
+  Scratch s("lock");
+  fs::create_directories(s.path() / "other");
+  Result first;
+  // The first run takes seconds; Ctrl-C ends it after 2 s (with a checkpoint).
+  std::thread t([&] {
+    first = run({"run", "--n", "300000", "--until", "5", "--out", "busy"}, s.path(), 2.0);
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  const Result second =
+      run({"run", "--n", "100", "--until", "0.5", "--out", "../busy"}, s.path() / "other");
+  t.join();
+  INFO("first: " << first.err << "\nsecond: " << second.err);
+  CHECK(second.code == 2);
+  CHECK(second.err.find("in use by another hypergas process") != std::string::npos);
+  CHECK((first.code == 0 || first.code == 130));
+}

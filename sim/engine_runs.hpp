@@ -8,10 +8,12 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "hypergas/analysis/moments_recorder.hpp"
 #include "hypergas/analysis/output.hpp"
 #include "hypergas/analysis/vacf_recorder.hpp"
+#include "hypergas/conserved.hpp"
 #include "options.hpp"
 #include "run_driver.hpp"
 
@@ -37,6 +39,36 @@ struct RunContext {
 /// after SIGINT/SIGTERM.
 RunRecord simulate(const RunOptions& o, bool progress, RunContext& ctx);
 RunRecord simulate(const RunOptions& o, bool progress);
+
+// A checkpoint after its header (save_header) holds, in this order: the loop state, the
+// conserved sums at t = 0, the recorders, the engine. start_engine reads that order and
+// save_run writes it, for both engines.
+
+/// Constructs `e` from cfg and sets c0 to its conserved sums; or, resuming (ctx.resume),
+/// restores st, c0, the recorders and the engine from the checkpoint. Returns the engine.
+template <class Engine, class... Recorders>
+Engine& start_engine(std::optional<Engine>& e, const typename Engine::Config& cfg,
+                     RunContext& ctx, DriverState& st, Conserved<Engine::dim>& c0,
+                     Recorders&... rec) {
+  if (ctx.resume) {
+    (*ctx.resume)(st, c0, rec...);
+    e.emplace(cfg, *ctx.resume);
+    ctx.resume->finish();
+    ++st.resumes;
+  } else {
+    e.emplace(cfg);
+    c0 = conserved(e->particles());
+  }
+  return *e;
+}
+
+/// Writes a checkpoint of the run (options, loop state, c0, recorders, engine).
+template <class Engine, class... Recorders>
+void save_run(checkpoint::Writer& w, const RunOptions& o, const DriverState& st,
+              const Conserved<Engine::dim>& c0, const Engine& e, const Recorders&... rec) {
+  save_header(w, o);
+  w(st, c0, rec..., e);
+}
 
 /// DSMC (time in equilibrium mean collision times), default until 10.
 RunRecord simulate_dsmc(const RunOptions& o, bool progress, RunContext& ctx);

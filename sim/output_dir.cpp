@@ -19,24 +19,13 @@ namespace fs = std::filesystem;
 namespace hypergas::cli {
 
 namespace {
-/// The lock file inside a staging folder: its owner holds an exclusive flock on it for as
-/// long as it runs, and the kernel releases the lock when the owner dies, however it dies.
-constexpr const char* lock_name = ".lock";
-
-/// Removes the staging folders whose owner no longer runs (a run killed with SIGKILL cannot
-/// clean up; its checkpoint, if any, is in the output folder itself).
+/// Removes staging folders left in `dir` by runs that were killed (SIGKILL leaves no chance
+/// to clean up). Called with the folder's lock held, so no live process owns one.
 void remove_stale_staging(const fs::path& dir) {
   std::error_code ec;
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    if (e.path().filename().string().rfind(".hypergas-staging-", 0) != 0) continue;
-    const int fd = ::open((e.path() / lock_name).c_str(), O_RDWR | O_CLOEXEC);
-    if (fd >= 0 && ::flock(fd, LOCK_EX | LOCK_NB) != 0) {  // its owner runs
-      ::close(fd);
-      continue;
-    }
-    fs::remove_all(e.path(), ec);
-    if (fd >= 0) ::close(fd);
-  }
+  for (const auto& e : fs::directory_iterator(dir, ec))
+    if (e.path().filename().string().rfind(".hypergas-staging-", 0) == 0)
+      fs::remove_all(e.path(), ec);
 }
 
 [[noreturn]] void unwritable(const fs::path& dir, const std::string& why) {
@@ -56,8 +45,7 @@ OutputDir::OutputDir(fs::path dir) : dir_(std::move(dir)) {
   std::reverse(missing.begin(), missing.end());
   for (const fs::path& p : missing) {
     if (!fs::create_directory(p, ec) || ec) {
-      for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, ec);
-      created_.clear();
+      remove_created();
       unwritable(dir_, fmt::format("cannot create '{}' ({})", p.string(),
                                    ec ? ec.message() : "exists"));
     }
@@ -72,8 +60,7 @@ OutputDir::OutputDir(fs::path dir) : dir_(std::move(dir)) {
     const bool busy = dir_fd_ >= 0 && errno == EWOULDBLOCK;
     if (dir_fd_ >= 0) ::close(dir_fd_);
     dir_fd_ = -1;
-    for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, ec);
-    created_.clear();
+    remove_created();
     if (busy)
       throw InvalidInput(fmt::format("output folder '{}' is in use by another hypergas process",
                                      dir_.string()));
@@ -81,30 +68,27 @@ OutputDir::OutputDir(fs::path dir) : dir_(std::move(dir)) {
   }
   remove_stale_staging(dir_);
   staging_ = dir_ / fmt::format(".hypergas-staging-{}", ::getpid());
-  fs::remove_all(staging_, ec);
-  if (fs::create_directory(staging_, ec) && !ec) {
-    lock_fd_ = ::open((staging_ / lock_name).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (lock_fd_ >= 0) ::flock(lock_fd_, LOCK_EX | LOCK_NB);
-  }
-  if (lock_fd_ < 0 || ec || ::access(staging_.c_str(), W_OK) != 0) {
-    if (lock_fd_ >= 0) ::close(lock_fd_);
-    if (dir_fd_ >= 0) ::close(dir_fd_);
-    lock_fd_ = dir_fd_ = -1;
+  if (!fs::create_directory(staging_, ec) || ec || ::access(staging_.c_str(), W_OK) != 0) {
+    ::close(dir_fd_);
+    dir_fd_ = -1;
     fs::remove_all(staging_, ec);
-    for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, ec);
-    created_.clear();
+    remove_created();
     unwritable(dir_, ec ? ec.message() : "permission denied");
   }
 }
 
 OutputDir::~OutputDir() {
   std::error_code ec;
-  if (lock_fd_ >= 0) ::close(lock_fd_);
   fs::remove_all(staging_, ec);
   if (dir_fd_ >= 0) ::close(dir_fd_);
-  if (done_) return;
-  // Remove created folders innermost first, and only if still empty (never a user's file).
+  if (!done_) remove_created();
+}
+
+void OutputDir::remove_created() {
+  // Innermost first, and only if still empty (never a user's file).
+  std::error_code ec;
   for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, ec);
+  created_.clear();
 }
 
 fs::path OutputDir::staged(std::string_view name) { return staging_ / fs::path(name); }
@@ -120,7 +104,7 @@ void OutputDir::write(std::string_view name, std::string_view content) {
 void OutputDir::commit() {
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(staging_))
-    if (e.is_regular_file() && e.path().filename() != lock_name) files.push_back(e.path());
+    if (e.is_regular_file()) files.push_back(e.path());
   std::sort(files.begin(), files.end());
   committed_.clear();
   for (const fs::path& p : files) {

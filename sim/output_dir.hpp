@@ -16,8 +16,8 @@ namespace hypergas::cli {
 class OutputDir {
  public:
   /// Creates `dir` (and missing parents), checks that files can be created in it and makes
-  /// the staging folder (removing those left by processes that no longer run). Holds a lock
-  /// on the folder while it lives. Throws InvalidInput naming the folder and the reason
+  /// the staging folder (removing those left by killed runs). Holds a lock on the folder
+  /// while it lives. Throws InvalidInput naming the folder and the reason
   /// otherwise, also when another hypergas process holds the folder.
   explicit OutputDir(std::filesystem::path dir);
   OutputDir(const OutputDir&) = delete;
@@ -38,13 +38,15 @@ class OutputDir {
   const std::vector<std::string>& committed() const { return committed_; }
 
  private:
+  /// Removes the folders the constructor created (innermost first, only if empty).
+  void remove_created();
+
   std::filesystem::path dir_;
   std::filesystem::path staging_;
   std::vector<std::filesystem::path> created_;  // folders we made, outermost first
   std::vector<std::string> committed_;
   bool done_ = false;
-  int lock_fd_ = -1;  // flock held on staging_/.lock while this object lives
-  int dir_fd_ = -1;   // flock held on dir_ itself: one process per output folder
+  int dir_fd_ = -1;  // flock held on dir_ itself: one process per output folder
 };
 
 }  // namespace hypergas::cli

@@ -89,8 +89,7 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
                         Checkpointer& ck) {
     RunObserver obs({&recs[r].moments}, "dsmc", until, progress && r == 0);
     const auto save = [&](checkpoint::Writer& w) {
-      save_header(w, o);
-      w(st, c0, recs[r].moments, engine);
+      save_run(w, o, st, c0, engine, recs[r].moments);
     };
     drive(engine, plan, st, obs, ck, save);
     const auto c1 = conserved(engine.particles());
@@ -105,16 +104,7 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
   if (k == 1) {
     std::optional<Engine> engine;
     Conserved<D> c0;
-    if (ctx.resume) {
-      (*ctx.resume)(st0, c0, recs[0].moments);
-      engine.emplace(cfg, *ctx.resume);
-      ctx.resume->finish();
-      ++st0.resumes;
-    } else {
-      engine.emplace(cfg);
-      c0 = conserved(engine->particles());
-    }
-    body(0, *engine, st0, c0, ctx.checkpoints);
+    body(0, start_engine(engine, cfg, ctx, st0, c0, recs[0].moments), st0, c0, ctx.checkpoints);
   } else {
     studies::run_replicas<Engine>(cfg, k, k, [&](int r, Engine& engine) {
       DriverState st;

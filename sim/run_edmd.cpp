@@ -41,20 +41,10 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress, RunCo
   DriverState st;
   Conserved<D> c0;
   std::optional<Engine> e;
-  if (ctx.resume) {
-    (*ctx.resume)(st, c0, rec.moments, vacf);
-    e.emplace(cfg, *ctx.resume);
-    ctx.resume->finish();
-    ++st.resumes;
-  } else {
-    e.emplace(cfg);
-    c0 = conserved(e->particles());
-  }
-  Engine& engine = *e;
+  Engine& engine = start_engine(e, cfg, ctx, st, c0, rec.moments, vacf);
   RunObserver obs({&rec.moments, &vacf}, "edmd", until, progress);
   const auto save = [&](checkpoint::Writer& w) {
-    save_header(w, o);
-    w(st, c0, rec.moments, vacf, engine);
+    save_run(w, o, st, c0, engine, rec.moments, vacf);
   };
   drive(engine, plan, st, obs, ctx.checkpoints, save);
   const auto t2 = Clock::now();

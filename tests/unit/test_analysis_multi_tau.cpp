@@ -47,6 +47,7 @@
 #include "hypergas/checkpoint.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/rng.hpp"
+#include "test_analysis_support.hpp"
 
 using namespace hypergas;
 using namespace hypergas::analysis;
@@ -91,20 +92,6 @@ std::size_t index_of(const MultiTauCurve& c, std::size_t lag) {
   FAIL("lag " << lag << " missing");
   return 0;
 }
-
-// A fresh file name under the system temporary folder, removed (with its .tmp) at scope exit.
-struct TempFile {
-  std::string path;
-  TempFile() {
-    std::string dir = (std::filesystem::temp_directory_path() / "hypergas_mtau_XXXXXX").string();
-    REQUIRE(::mkdtemp(dir.data()) != nullptr);
-    path = dir + "/state.hgck";
-  }
-  ~TempFile() {
-    std::error_code ec;
-    std::filesystem::remove_all(std::filesystem::path(path).parent_path(), ec);
-  }
-};
 
 // n particles in `dim` dimensions, stride dim + 1 (a padding slot), velocities and positions.
 struct Frame {
@@ -355,15 +342,16 @@ TEST_CASE("VacfRecorder restored from a checkpoint continues bit for bit", "[ana
   };
   VacfRecorder orig(5, 8, 2);  // 5 of 8 particles, p = 8: several levels within 300 frames
   for (std::size_t f = 0; f < 300; ++f) step(orig, nullptr, f);
-  TempFile file;
+  test::TempDir dir;
+  const std::string file = (dir.path / "state.hgck").string();
   {
-    checkpoint::Writer out(file.path);
+    checkpoint::Writer out(file);
     orig.io(out);
     out.commit();
   }
   VacfRecorder back(1);  // other parameters: the checkpoint restores them
   {
-    checkpoint::Reader in(file.path);
+    checkpoint::Reader in(file);
     back.io(in);
     in.finish();
   }
@@ -383,12 +371,12 @@ TEST_CASE("VacfRecorder restored from a checkpoint continues bit for bit", "[ana
 
   // A file of another layout is refused.
   {
-    checkpoint::Writer out(file.path);
+    checkpoint::Writer out(file);
     MultiTauCorrelator c(Kind::correlation, 2, 2);
     c.io(out);
     out.commit();
   }
-  checkpoint::Reader in(file.path);
+  checkpoint::Reader in(file);
   VacfRecorder other(3);
   CHECK_THROWS_AS(other.io(in), InvalidInput);
 }
@@ -420,9 +408,10 @@ TEST_CASE("VacfRecorder: Green–Kubo on the multiple-tau grid and vacf.csv rows
     s += 0.5 * (c[i - 1] + c[i]) * static_cast<double>(lags[i] - lags[i - 1]);
   CHECK(rec.green_kubo() == Approx(s * dt / dim).epsilon(1e-14));
   // vacf.csv: a header and one row per lag, `lag,vacf,time` (no positions: no msd).
-  TempFile file;
-  rec.write_csv(file.path);
-  std::ifstream in(file.path);
+  test::TempDir dir;
+  const std::string file = (dir.path / "state.hgck").string();
+  rec.write_csv(file);
+  std::ifstream in(file);
   std::string line;
   std::getline(in, line);
   CHECK(line == "lag,vacf,time");

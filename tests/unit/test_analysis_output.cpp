@@ -21,48 +21,20 @@ using namespace hypergas;
 using namespace hypergas::analysis;
 namespace fs = std::filesystem;
 
-namespace {
-// A fresh empty folder under the system temporary folder, removed at scope exit.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string p = (fs::temp_directory_path() / "hypergas_analysis_XXXXXX").string();
-    REQUIRE(::mkdtemp(p.data()) != nullptr);
-    path = p;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::permissions(path, fs::perms::owner_all, ec);
-    fs::remove_all(path, ec);
-  }
-  std::size_t entries() const {
-    return static_cast<std::size_t>(
-        std::distance(fs::directory_iterator(path), fs::directory_iterator{}));
-  }
-};
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-}  // namespace
-
 TEST_CASE("CSV is written atomically with its header and leaves no temporary file", "[analysis]") {
-  TempDir dir;
+  test::TempDir dir;
   const fs::path f = dir.path / "a.csv";
   write_csv(f.string(), {"lag", "vacf"}, {{0, 1.5}, {1, 0.1}, {2, NAN}});
-  CHECK(read(f) == "lag,vacf\n0,1.5\n1,0.10000000000000001\n2,\n");  // NaN: empty field
+  CHECK(test::read_text(f) == "lag,vacf\n0,1.5\n1,0.10000000000000001\n2,\n");  // NaN: empty field
   CHECK(dir.entries() == 1);
   // Overwriting replaces the file as a whole.
   write_csv(f.string(), {"x"}, {{3}});
-  CHECK(read(f) == "x\n3\n");
+  CHECK(test::read_text(f) == "x\n3\n");
   CHECK(dir.entries() == 1);
 }
 
 TEST_CASE("A failing write leaves the old file and no partial file", "[analysis]") {
-  TempDir dir;
+  test::TempDir dir;
   const fs::path f = dir.path / "keep.csv";
   write_csv(f.string(), {"x"}, {{1}});
   // The writer fails half way: the old content survives, nothing else is left.
@@ -72,7 +44,7 @@ TEST_CASE("A failing write leaves the old file and no partial file", "[analysis]
                                       throw std::runtime_error("disk on fire");
                                     }),
                   std::runtime_error);
-  CHECK(read(f) == "x\n1\n");
+  CHECK(test::read_text(f) == "x\n1\n");
   CHECK(dir.entries() == 1);
   // A row of the wrong length is refused before anything is written.
   CHECK_THROWS_AS(write_csv((dir.path / "bad.csv").string(), {"a", "b"}, {{1}}), InvalidInput);
@@ -80,7 +52,7 @@ TEST_CASE("A failing write leaves the old file and no partial file", "[analysis]
 }
 
 TEST_CASE("A missing or unwritable folder is an InvalidInput naming the path", "[analysis]") {
-  TempDir dir;
+  test::TempDir dir;
   const std::string missing = (dir.path / "no" / "such" / "x.csv").string();
   CHECK_THROWS_WITH(write_csv(missing, {"x"}, {{1}}),
                     Catch::Contains(missing) && Catch::Contains("does not exist"));
@@ -111,9 +83,9 @@ TEST_CASE("JSON summary: one object, keys in order, NaN as null", "[analysis]") 
                         {"ok", true}};
   CHECK(to_json(o) ==
         R"({"dim": 3, "engine": "dsmc \"x\"", "wall_s": 0.25, "drift": null, "ok": true})");
-  TempDir dir;
+  test::TempDir dir;
   write_json((dir.path / "summary.json").string(), o);
-  CHECK(read(dir.path / "summary.json") == to_json(o) + "\n");
+  CHECK(test::read_text(dir.path / "summary.json") == to_json(o) + "\n");
 }
 
 TEST_CASE("MomentsRecorder writes moments.csv and speed_histogram.csv per docs/design.md",
@@ -129,13 +101,13 @@ TEST_CASE("MomentsRecorder writes moments.csv and speed_histogram.csv per docs/d
     s.collisions_per_particle = 1.0 * k;
     rec.observe(s);
   }
-  TempDir dir;
+  test::TempDir dir;
   rec.write_moments_csv((dir.path / "moments.csv").string());
   rec.write_speed_histogram_csv((dir.path / "speed_histogram.csv").string());
-  const std::string m = read(dir.path / "moments.csv");
+  const std::string m = test::read_text(dir.path / "moments.csv");
   CHECK(m.rfind("time,collisions_per_particle,m2,m4,kurtosis_x,", 0) == 0);
   CHECK(std::count(m.begin(), m.end(), '\n') == 4);
-  const std::string h = read(dir.path / "speed_histogram.csv");
+  const std::string h = test::read_text(dir.path / "speed_histogram.csv");
   CHECK(h.rfind("lo,hi,count,density,maxwell_density\n", 0) == 0);
   CHECK(std::count(h.begin(), h.end(), '\n') == 41);
   // Columns are consistent: counts sum to n less the (rare) overflow, both densities
@@ -173,7 +145,7 @@ TEST_CASE("MomentsRecorder writes moments.csv and speed_histogram.csv per docs/d
   mix.observe(st.snapshot());
   CHECK(mix.columns().back() == "kT_1");
   mix.write_speed_histogram_csv((dir.path / "h1.csv").string(), 1);
-  CHECK(read(dir.path / "h1.csv").rfind("lo,hi,count,density,maxwell_density\n", 0) == 0);
+  CHECK(test::read_text(dir.path / "h1.csv").rfind("lo,hi,count,density,maxwell_density\n", 0) == 0);
   CHECK_THROWS_AS(mix.write_speed_histogram_csv((dir.path / "h2.csv").string(), 2), InvalidInput);
   st.species.clear();
   CHECK_THROWS_AS(mix.observe(st.snapshot()), InvalidInput);

@@ -40,26 +40,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string p = (fs::temp_directory_path() / "hypergas_recorder_XXXXXX").string();
-    REQUIRE(::mkdtemp(p.data()) != nullptr);
-    path = p;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 // Bitwise equality of two rows (NaN equals NaN of the same bits).
 bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
@@ -181,13 +161,13 @@ TEST_CASE("Streaming recorder equals the copy-and-sort computation (bit for bit 
         MomentsRecorder rec(bins, n);
         rec.observe(s);
         CHECK(same_bits(rec.rows().back(), old.row));
-        TempDir dir;
+        test::TempDir dir;
         for (std::size_t k = 0; k < old.hists.size(); ++k) {
           const int sp = static_cast<int>(k) - 1;
           const fs::path a = dir.path / "new.csv", b = dir.path / "old.csv";
           rec.write_speed_histogram_csv(a.string(), sp);
           write_histogram_csv(b.string(), old.hists[k], old.refs[k]);
-          CHECK(read(a) == read(b));
+          CHECK(test::read_text(a) == test::read_text(b));
         }
         // n > cap: compensated sums and a KS subsample; the rest equals it to round-off.
         MomentsRecorder sub(bins, n / 4);
@@ -405,7 +385,7 @@ TEST_CASE("A recorder saved and restored continues exactly as the original", "[a
   MomentsRecorder original(bins, cap, 987);
   for (int j = 0; j < 3; ++j) original.observe(snap(j));
 
-  TempDir dir;
+  test::TempDir dir;
   const std::string ckpt = (dir.path / "recorder.ckpt").string();
   {
     checkpoint::Writer w(ckpt);
@@ -432,12 +412,12 @@ TEST_CASE("A recorder saved and restored continues exactly as the original", "[a
   }
   original.write_moments_csv((dir.path / "ma.csv").string());
   restored.write_moments_csv((dir.path / "mb.csv").string());
-  CHECK(read(dir.path / "ma.csv") == read(dir.path / "mb.csv"));
+  CHECK(test::read_text(dir.path / "ma.csv") == test::read_text(dir.path / "mb.csv"));
   for (int sp = -1; sp < 2; ++sp) {
     INFO("species " << sp);
     original.write_speed_histogram_csv((dir.path / "ha.csv").string(), sp);
     restored.write_speed_histogram_csv((dir.path / "hb.csv").string(), sp);
-    CHECK(read(dir.path / "ha.csv") == read(dir.path / "hb.csv"));
+    CHECK(test::read_text(dir.path / "ha.csv") == test::read_text(dir.path / "hb.csv"));
   }
   // A fresh recorder round-trips too (nothing observed yet), and the restored one then
   // records as a new one would.
@@ -463,7 +443,7 @@ TEST_CASE("Histogram checkpoints restore edges, counts and tails exactly", "[ana
   Histogram h(0.1, 2.9, 13);
   Rng rng(77);
   for (int i = 0; i < 1000; ++i) h.add(4.0 * rng.uniform() - 0.5);
-  TempDir dir;
+  test::TempDir dir;
   const std::string ckpt = (dir.path / "h.ckpt").string();
   {
     checkpoint::Writer w(ckpt);

@@ -1,7 +1,17 @@
-// Test helpers for the analysis tests: owned particle arrays seen through a Snapshot.
+// Test helpers for the analysis tests: owned particle arrays seen through a Snapshot, and a
+// scratch folder for the tests that write files.
 #pragma once
 
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "hypergas/observer.hpp"
@@ -43,6 +53,36 @@ inline void fill_maxwell(OwnedState& st, Rng& rng, double kT, double inv_mass = 
   const double s = std::sqrt(kT * inv_mass);
   for (std::size_t i = from; i < std::min(to, st.size()); ++i)
     for (int k = 0; k < st.dim; ++k) st.velocity(i)[k] = s * rng.normal();
+}
+
+/// A fresh empty folder under the system temporary folder, removed at scope exit.
+struct TempDir {
+  std::filesystem::path path;
+  TempDir() {
+    std::string p = (std::filesystem::temp_directory_path() / "hypergas_test_XXXXXX").string();
+    REQUIRE(::mkdtemp(p.data()) != nullptr);
+    path = p;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::permissions(path, std::filesystem::perms::owner_all, ec);
+    std::filesystem::remove_all(path, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  /// Entries directly in the folder.
+  std::size_t entries() const {
+    return static_cast<std::size_t>(std::distance(std::filesystem::directory_iterator(path),
+                                                  std::filesystem::directory_iterator{}));
+  }
+};
+
+/// The whole content of file `p` ("" if it cannot be read).
+inline std::string read_text(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 }  // namespace hypergas::test

@@ -2,7 +2,8 @@
 # Where the wall time of a default `hypergas run` goes: engine, per-snapshot analysis and
 # output (CSV and plots), from summary.json, for DSMC 3D hard spheres at N = 1e6 and 1e7
 # (add 1e8 with --large: 3.3 GB of memory and several minutes), default --every (until/50).
-# Usage: bench/analysis_split.sh [--large] [path/to/hypergas]   (default build/sim/hypergas)
+# Usage: bench/analysis_split.sh [--large] [path/to/hypergas]   (default build/sim/hypergas).
+# Needs python3 (Debian python3) to read summary.json.
 set -euo pipefail
 sizes=(1000000 10000000)
 if [ "${1:-}" = "--large" ]; then sizes+=(100000000); shift; fi

@@ -2,7 +2,8 @@
 # Whole-process peak memory per particle of `hypergas run`: (peak RSS at N - peak RSS at
 # N = 1000) / N, for the sizes of docs/benchmarks.md. Peak RSS is the process's maximum
 # resident set (getrusage), which summary.json reports as peak_rss_bytes_per_particle * n.
-# Usage: bench/memory.sh [path/to/hypergas]   (default build/sim/hypergas)
+# Usage: bench/memory.sh [path/to/hypergas]   (default build/sim/hypergas). Needs python3
+# (Debian python3) to read summary.json.
 set -euo pipefail
 H=${1:-build/sim/hypergas}
 tmp=$(mktemp -d)

@@ -1,6 +1,6 @@
 // bench_dsmc: DSMC throughput, one JSON object per line (hypergas/studies/throughput.hpp).
 // Usage: bench_dsmc [--dims 1,2,3] [--ns 10000,1000000] [--reps 3] [--min-collisions 5e6]
-//                   [--model NAME] [--threads 2] [--clock wall|cpu]
+//                   [--model NAME] [--threads 1,2] [--clock wall|cpu]
 // (NAME: a collision model of hypergas/registry.hpp)
 #include <cstdlib>
 #include <iostream>
@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
         std::cout << "Usage: bench_dsmc [--dims 1,2,3] [--ns 10000,1000000] [--reps 3]\n"
                      "                  [--min-collisions 5e6] [--model "
                   << registry::join(registry::model_names(), "|")
-                  << "] [--threads 2] [--clock wall|cpu]\n"
+                  << "] [--threads 1,2] [--clock wall|cpu]\n"
                      "DSMC throughput, one JSON object per line (same as hypergas bench).\n"
                      "--clock cpu: rates per CPU second of the thread (for A/B runs on a\n"
                      "shared machine; the default is wall seconds).\n";
@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
       else if (k == "--min-collisions")
         o.min_collisions = std::stod(v);
       else if (k == "--threads")
-        o.threads = std::stoi(v);
+        o.threads = parse_list<int>(v);
       else if (k == "--clock") {
         if (v != "wall" && v != "cpu") throw hypergas::InvalidInput("--clock must be wall or cpu");
         o.cpu_clock = v == "cpu";

@@ -22,7 +22,7 @@ int bench_command(const BenchOptions& o) {
     b.reps = o.reps;
     b.min_collisions = o.min_collisions;
     b.model = o.model;
-    b.threads = o.threads;
+    b.threads.assign(o.threads.begin(), o.threads.end());
     b.seed = o.seed;
     studies::run_dsmc_bench(std::cout, b);
   }

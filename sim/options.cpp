@@ -233,8 +233,12 @@ void add_run_options(CLI::App& app, RunOptions& o) {
       ->capture_default_str();
   add_number(app, "--seed", o.seed, "random seed, an integer in 0..2^64-1");
   add_number(app, "--threads,-j", o.threads,
-                 "dsmc: run K independent replicas on K threads (files from replica 0, which "
-                 "keeps --seed; summary adds totals and replica error bars); edmd: 1")
+                 "dsmc: run the one system on T threads, 1..64; every file is bit for bit "
+                 "the same for every T")
+      ->capture_default_str();
+  add_number(app, "--replicas", o.replicas,
+                 "dsmc: run K independent copies, 1..64 (files from copy 0, which keeps "
+                 "--seed; summary adds totals and replica error bars)")
       ->capture_default_str();
   add_number(app, "--checkpoint-every", o.checkpoint_every,
                  "write OUT/checkpoint.hgck at the first sampling time after every T time "
@@ -245,7 +249,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
                  "also write a checkpoint after this much wall time, e.g. 90s, 10min, 2h");
   app.footer(
       "Options of the other engine are refused: --packing is edmd only; --model, "
-      "--vhs-exponent (with --model vhs), --temperature and --threads are dsmc only.");
+      "--vhs-exponent (with --model vhs), --temperature, --threads and --replicas are dsmc "
+      "only.");
 }
 
 void add_bench_options(CLI::App& app, BenchOptions& o) {
@@ -262,8 +267,10 @@ void add_bench_options(CLI::App& app, BenchOptions& o) {
   add_number(app, "--min-collisions", o.min_collisions,
                  "accepted collisions per timed run, >= 1000");
   add_number(app, "--threads,-j", o.threads,
-                 "dsmc: > 1 adds a line with the aggregate rate of that many concurrent "
-                 "independent replicas, 1..64");
+                 "dsmc: thread counts to time one system with, each 1..64 (repeatable or "
+                 "comma-separated: -j 1,2); each line adds speedup and efficiency against the "
+                 "first")
+      ->delimiter(',');
   add_number(app, "--seed", o.seed, "random seed");
 }
 
@@ -280,7 +287,8 @@ void validate(const RunOptions& o) {
   if (!o.init.empty()) check_name("--init", o.init, registry::initial_state);
   const char* other = edmd ? "dsmc" : "edmd";
   for (const char* opt : edmd ? std::vector<const char*>{"--model", "--vhs-exponent",
-                                                         "--temperature", "--threads"}
+                                                         "--temperature", "--threads",
+                                                         "--replicas"}
                               : std::vector<const char*>{"--packing"})
     if (o.was_given(opt))
       bad(fmt::format("{} applies to --engine {} only, not to --engine {}", opt, other,
@@ -301,8 +309,8 @@ void validate(const RunOptions& o) {
   if (o.was_given("--checkpoint-every") && !finite_positive(o.checkpoint_every))
     bad(fmt::format("--checkpoint-every must be a finite time > 0, got {}", o.checkpoint_every));
   if (!o.checkpoint_wall.empty()) (void)parse_duration("--checkpoint-wall", o.checkpoint_wall);
-  if ((o.checkpoint_every > 0.0 || !o.checkpoint_wall.empty()) && o.threads != 1)
-    bad("--checkpoint-every and --checkpoint-wall need --threads 1 (one system)");
+  if ((o.checkpoint_every > 0.0 || !o.checkpoint_wall.empty()) && o.replicas != 1)
+    bad("--checkpoint-every and --checkpoint-wall need --replicas 1 (one system)");
   if (!finite_positive(o.packing))
     bad(fmt::format("--packing must be a finite fraction > 0, got {}", o.packing));
   const double jam = jamming_packing(o.dim);
@@ -327,6 +335,8 @@ void validate(const RunOptions& o) {
     bad(fmt::format("--temperature must be in [1e-100, 1e100], got {}", o.temperature));
   if (o.threads < 1 || o.threads > 64)
     bad(fmt::format("--threads must be in 1..64, got {}", o.threads));
+  if (o.replicas < 1 || o.replicas > 64)
+    bad(fmt::format("--replicas must be in 1..64, got {}", o.replicas));
   check_memory(o.n, o.dim, edmd);
 }
 
@@ -347,8 +357,9 @@ void validate(const BenchOptions& o) {
     for (int d : o.dims)
       if (d == 1) bad(fmt::format("--packing {} in D = 1: at most 0.99", o.packing));
   if (o.reps < 1 || o.reps > 100) bad(fmt::format("--reps must be in 1..100, got {}", o.reps));
-  if (o.threads < 1 || o.threads > 64)
-    bad(fmt::format("--threads must be in 1..64, got {}", o.threads));
+  if (o.threads.empty()) bad("--threads needs at least one thread count");
+  for (int t : o.threads)
+    if (t < 1 || t > 64) bad(fmt::format("--threads must be in 1..64, got {}", t));
   if (!(std::isfinite(o.min_collisions) && o.min_collisions >= 1000.0 &&
         o.min_collisions <= 1e12))
     bad(fmt::format("--min-collisions must be in [1000, 1e12], got {}", o.min_collisions));

@@ -34,7 +34,8 @@ struct RunOptions {
   double fraction = 0.5;         ///< number fraction of the heavy species
   double temperature = 1.0;      ///< initial kT (DSMC velocity scale; EDMD fixes kT = 1)
   std::uint64_t seed = 1;        ///< random seed
-  int threads = 1;               ///< DSMC: independent replicas, one per thread
+  int threads = 1;               ///< DSMC: threads of the one system (same result for any)
+  int replicas = 1;              ///< DSMC: independent copies (seeds derived from --seed)
   double checkpoint_every = 0.0; ///< checkpoint every this much engine time (0 = off)
   std::string checkpoint_wall;   ///< checkpoint every this much wall time ("90s", "10min")
   std::vector<std::string> given;  ///< options given on the command line (long names)
@@ -58,7 +59,7 @@ struct BenchOptions {
   double packing = 0.1;                     ///< EDMD packing fraction
   int reps = 3;                             ///< timed runs per point (median reported)
   double min_collisions = 5e6;              ///< accepted collisions per timed run
-  int threads = 1;                          ///< DSMC: > 1 also times that many replicas
+  std::vector<int> threads{1};              ///< DSMC: thread counts to time, each 1..64
   std::uint64_t seed = 1;
 };
 

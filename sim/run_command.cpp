@@ -25,7 +25,7 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume) {
   OutputDir out(o.out);
   const bool edmd = o.engine_kind() == registry::EngineKind::edmd;
   RunContext ctx;
-  if (o.threads == 1)
+  if (o.replicas == 1)
     ctx.checkpoints = Checkpointer(out.dir(), o.checkpoint_every, o.checkpoint_wall_seconds());
   ctx.resume = resume;
   RunRecord rec = simulate(o, true, ctx);

@@ -63,9 +63,10 @@ double summary_number(const analysis::JsonObject& o, const std::string& key) {
 
 namespace {
 
-/// Runs one system (threads = 1: checkpoints and resume through ctx) or `threads` independent
-/// replicas (studies/replicas.hpp: replica 0 keeps the seed, so its files equal those of a
-/// one-thread run). The files come from replica 0; the summary adds totals, the aggregate
+/// Runs one system on o.threads threads (checkpoints and resume through ctx) or `replicas`
+/// independent replicas (studies/replicas.hpp: replica 0 keeps the seed, so its files equal
+/// those of a one-replica run; the replicas run side by side, one per thread, with
+/// --threads 1, else one after another, each on o.threads threads). The files come from replica 0; the summary adds totals, the aggregate
 /// rate and the replica mean of the final kurtosis with its error.
 template <int D, class Model, bool Species>
 RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunContext& ctx) {
@@ -77,7 +78,7 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
   const double every = sampling_interval(until, o.every);
   const RunPlan plan{.until = until, .every = every, .t0 = 0.0, .warmup_stops = 0,
                      .clamp_last = true};
-  const int k = o.threads;
+  const int k = o.replicas;
 
   std::vector<RunRecord> recs(static_cast<std::size_t>(k));
   std::vector<double> engine_s(k), rate(k), drift_e(k), drift_p(k), cpp(k);
@@ -87,6 +88,7 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
   const auto t0 = Clock::now();
   const auto body = [&](int r, Engine& engine, DriverState& st, const Conserved<D>& c0,
                         Checkpointer& ck) {
+    engine.set_threads(o.threads);
     RunObserver obs({&recs[r].moments}, "dsmc", until, progress && r == 0);
     const auto save = [&](checkpoint::Writer& w) {
       save_run(w, o, st, c0, engine, recs[r].moments);
@@ -106,7 +108,7 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
     Conserved<D> c0;
     body(0, start_engine(engine, cfg, ctx, st0, c0, recs[0].moments), st0, c0, ctx.checkpoints);
   } else {
-    studies::run_replicas<Engine>(cfg, k, k, [&](int r, Engine& engine) {
+    studies::run_replicas<Engine>(cfg, k, o.threads == 1 ? k : 1, [&](int r, Engine& engine) {
       DriverState st;
       Checkpointer none;
       body(r, engine, r == 0 ? st0 : st, conserved(engine.particles()), none);
@@ -142,6 +144,7 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
       {"mass_ratio", o.mass_ratio},
       {"fraction", Species ? o.fraction : 0.0},
       {"replicas", std::int64_t{k}},
+      {"threads", std::int64_t{o.threads}},
       {"collisions_per_particle", cpp[0]},
       {"kurtosis_x", last("kurtosis_x")},
       {"m4_ratio", last("m4_ratio")},

@@ -1,4 +1,4 @@
-// DSMC throughput (throughput.hpp): timed engine runs, the memory-bound probe, replicas.
+// DSMC throughput (throughput.hpp): timed engine runs on 1..T threads, the memory-bound probe.
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
@@ -11,7 +11,6 @@
 #include "hypergas/particles.hpp"
 #include "hypergas/registry.hpp"
 #include "hypergas/rng.hpp"
-#include "hypergas/studies/replicas.hpp"
 #include "hypergas/studies/statistics.hpp"
 #include "hypergas/studies/throughput.hpp"
 
@@ -63,17 +62,19 @@ struct DsmcPoint {
 };
 
 template <int D, class Model>
-DsmcPoint time_engine(std::size_t n, double min_collisions, std::uint64_t seed, bool cpu_clock) {
+DsmcPoint time_engine(std::size_t n, int threads, double min_collisions, std::uint64_t seed,
+                      bool cpu_clock) {
   dsmc::Config cfg;
   cfg.n = n;
   cfg.seed = seed;
   cfg.init = InitialState::delta;
   cfg.vhs_exponent = 0.5;
   dsmc::Engine<D, Model> e(cfg);
+  e.set_threads(threads);
   e.run_until(0.5);
   const auto c0 = e.collisions(), k0 = e.candidates();
   const double t_run = 2.0 * min_collisions / static_cast<double>(n);
-  const Stopwatch clock(cpu_clock);
+  const Stopwatch clock(cpu_clock && threads == 1);
   e.run_until(e.time() + t_run);
   const double w = clock.seconds();
   const double dc = static_cast<double>(e.collisions() - c0);
@@ -81,50 +82,40 @@ DsmcPoint time_engine(std::size_t n, double min_collisions, std::uint64_t seed, 
   return {dc / w, dk / w, dc / dk, e.bytes_per_particle(), w};
 }
 
+/// One line per thread count; the runs of the thread counts alternate within each repeat
+/// so that drifts of a shared machine hit all of them alike.
 template <int D, class Model>
 void bench_point(std::ostream& out, const DsmcBenchOptions& o, std::size_t n) {
-  std::vector<double> rate, cand, acc, probe;
+  const std::size_t nt = o.threads.size();
+  std::vector<std::vector<double>> rate(nt), cand(nt), acc(nt);
+  std::vector<double> probe;
   double bytes = 0.0;
   for (int r = 0; r < o.reps; ++r) {
-    const DsmcPoint p = time_engine<D, Model>(n, o.min_collisions, o.seed + r, o.cpu_clock);
-    rate.push_back(p.collisions_per_s);
-    cand.push_back(p.candidates_per_s);
-    acc.push_back(p.acceptance);
-    bytes = p.bytes_per_particle;
+    for (std::size_t k = 0; k < nt; ++k) {
+      const DsmcPoint p =
+          time_engine<D, Model>(n, o.threads[k], o.min_collisions, o.seed + r, o.cpu_clock);
+      rate[k].push_back(p.collisions_per_s);
+      cand[k].push_back(p.candidates_per_s);
+      acc[k].push_back(p.acceptance);
+      bytes = p.bytes_per_particle;
+    }
     probe.push_back(
         pair_update_probe<D>(n, std::max(2e6, o.min_collisions), o.seed + r, o.cpu_clock));
   }
-  const double cr = median(rate), pr = median(probe);
-  char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "{\"bench\":\"dsmc\",\"engine\":\"dsmc\",\"model\":\"%s\",\"dim\":%d,\"n\":%zu,"
-                "\"reps\":%d,\"collisions_per_s\":%.4g,\"candidates_per_s\":%.4g,"
-                "\"acceptance\":%.4f,\"bytes_per_particle\":%.1f,"
-                "\"probe_pair_updates_per_s\":%.4g,\"probe_ratio\":%.4f,\"threads\":1,"
-                "\"clock\":\"%s\"}",
-                std::string(Model::name).c_str(), D, n, o.reps, cr, median(cand), median(acc),
-                bytes, pr, cr / pr, o.cpu_clock ? "cpu" : "wall");
-  out << buf << '\n' << std::flush;
-  if (o.threads > 1) {  // aggregate throughput of independent replicas, one per thread
-    using Replica = dsmc::HardSpheres;
-    dsmc::Config cfg;
-    cfg.n = n;
-    cfg.seed = o.seed;
-    cfg.init = InitialState::delta;
-    std::vector<double> coll(o.threads), wall(o.threads);
-    run_replicas<dsmc::Engine<D, Replica>>(cfg, o.threads, o.threads, [&](int r, auto& e) {
-      const auto c0 = e.collisions();
-      const Stopwatch clock(false);
-      e.run_until(2.0 * o.min_collisions / static_cast<double>(n));
-      coll[r] = static_cast<double>(e.collisions() - c0);
-      wall[r] = clock.seconds();
-    });
-    double total = 0.0;
-    for (int r = 0; r < o.threads; ++r) total += coll[r] / wall[r];
+  const double pr = median(probe), base = median(rate[0]);
+  for (std::size_t k = 0; k < nt; ++k) {
+    const double cr = median(rate[k]);
+    const double speedup = cr / base * o.threads[0];
+    char buf[640];
     std::snprintf(buf, sizeof buf,
-                  "{\"bench\":\"dsmc_replicas\",\"engine\":\"dsmc\",\"model\":\"%s\",\"dim\":%d,"
-                  "\"n\":%zu,\"threads\":%d,\"collisions_per_s\":%.4g}",
-                  std::string(Replica::name).c_str(), D, n, o.threads, total);
+                  "{\"bench\":\"dsmc\",\"engine\":\"dsmc\",\"model\":\"%s\",\"dim\":%d,\"n\":%zu,"
+                  "\"reps\":%d,\"collisions_per_s\":%.4g,\"candidates_per_s\":%.4g,"
+                  "\"acceptance\":%.4f,\"bytes_per_particle\":%.1f,"
+                  "\"probe_pair_updates_per_s\":%.4g,\"probe_ratio\":%.4f,\"threads\":%d,"
+                  "\"speedup\":%.3f,\"efficiency\":%.3f,\"clock\":\"%s\"}",
+                  std::string(Model::name).c_str(), D, n, o.reps, cr, median(cand[k]),
+                  median(acc[k]), bytes, pr, cr / pr, o.threads[k], speedup,
+                  speedup / o.threads[k], o.cpu_clock && o.threads[k] == 1 ? "cpu" : "wall");
     out << buf << '\n' << std::flush;
   }
 }

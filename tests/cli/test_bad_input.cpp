@@ -105,7 +105,9 @@ TEST_CASE("run: numbers are parsed whole and range-checked; repeats and strays r
   expect_rejected({"run", "--checkpoint-every", "0"}, "--checkpoint-every must be a finite");
   expect_rejected({"run", "--checkpoint-wall", "5x"}, "unknown unit 'x'");
   expect_rejected({"run", "--checkpoint-wall", "-1min"}, "--checkpoint-wall must be");
-  expect_rejected({"run", "--threads", "2", "--checkpoint-every", "1"}, "need --threads 1");
+  expect_rejected({"run", "--replicas", "2", "--checkpoint-every", "1"}, "need --replicas 1");
+  expect_rejected({"run", "--replicas", "0"}, "--replicas must be in 1..64");
+  expect_rejected({"run", "--engine", "edmd", "--replicas", "2"}, "--engine dsmc only");
 }
 
 TEST_CASE("run: --n 1e4 is read as 10000", "[cli]") {

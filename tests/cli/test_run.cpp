@@ -133,13 +133,14 @@ TEST_CASE("bench prints one JSON object per line on stdout", "[cli]") {
   CHECK(edmd);
 }
 
-TEST_CASE("run --threads 2 runs two DSMC replicas; replica 0 equals the one-thread run", "[cli]") {
+TEST_CASE("run --replicas 2 runs two DSMC replicas; replica 0 equals the one-replica run",
+          "[cli]") {
   cli_test::Scratch s("replicas");
   const std::vector<std::string> base{"run", "--dim", "3", "--n", "2000", "--until", "1",
                                       "--seed", "11"};
   auto one = base, two = base;
   one.insert(one.end(), {"--out", (s.path() / "one").string()});
-  two.insert(two.end(), {"--out", (s.path() / "two").string(), "--threads", "2"});
+  two.insert(two.end(), {"--out", (s.path() / "two").string(), "--replicas", "2"});
   REQUIRE(cli_test::run(one, s.path()).code == 0);
   REQUIRE(cli_test::run(two, s.path()).code == 0);
   // Same seed for replica 0: bit-identical moments.
@@ -147,5 +148,22 @@ TEST_CASE("run --threads 2 runs two DSMC replicas; replica 0 equals the one-thre
         cli_test::slurp(s.path() / "two" / "moments.csv"));
   CHECK(cli_test::slurp(s.path() / "two" / "summary.json").find("\"replicas\": 2") !=
         std::string::npos);
+}
+
+TEST_CASE("run --threads T writes the same files for T = 1, 2, 3", "[cli]") {
+  // 30000 particles: above the size where the engine splits candidate blocks over threads.
+  cli_test::Scratch s("threads");
+  const std::vector<std::string> base{"run", "--dim", "3", "--n", "30000", "--until", "2",
+                                      "--init", "beams", "--seed", "5"};
+  for (const char* t : {"1", "2", "3"}) {
+    auto args = base;
+    args.insert(args.end(), {"--out", (s.path() / t).string(), "--threads", t});
+    REQUIRE(cli_test::run(args, s.path()).code == 0);
+  }
+  for (const char* f : {"moments.csv", "speed_histogram.csv"})
+    for (const char* t : {"2", "3"}) {
+      INFO(f << " with --threads " << t);
+      CHECK(cli_test::slurp(s.path() / "1" / f) == cli_test::slurp(s.path() / t / f));
+    }
 }
 #endif

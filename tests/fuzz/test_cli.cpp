@@ -340,8 +340,8 @@ const std::vector<std::string> subcommands{"run", "bench", "resume", "report"};
 const std::set<std::string> run_names{
     "--engine", "--dim", "-d", "--n", "-n", "--out", "-o", "--json", "--model",
     "--vhs-exponent", "--init", "--until", "--every", "--packing", "--mass-ratio", "--fraction",
-    "--temperature", "--seed", "--threads", "-j", "--checkpoint-every", "--checkpoint-wall",
-    "--help", "-h"};
+    "--temperature", "--seed", "--threads", "-j", "--replicas", "--checkpoint-every",
+    "--checkpoint-wall", "--help", "-h"};
 const std::set<std::string> bench_names{"--engine", "--dim", "-d", "--n", "-n", "--model",
                                         "--packing", "--reps", "--min-collisions", "--threads",
                                         "-j", "--seed", "--help", "-h"};
@@ -463,8 +463,9 @@ bool run_costly(const Args& a, double n_cap = 2000, double until_cap = 20,
   for (const auto& e : values_of(a, {"--engine"})) edmd = edmd || contains_nocase(e, "edmd");
   const auto until = extreme_value(a, {"--until"}, tiny, 1e12, edmd ? 20 : 10);
   const auto threads = extreme_value(a, {"--threads", "-j"}, 1, 64, 1);
+  const auto copies = extreme_value(a, {"--replicas"}, 1, 64, 1);
   const auto packing = extreme_value(a, {"--packing"}, tiny, 1, 0.1);
-  if (!n || !dim || !until || !threads || !packing) return false;  // refused
+  if (!n || !dim || !until || !threads || !copies || !packing) return false;  // refused
   const auto every = extreme_value(a, {"--every"}, tiny, 1e300, *until / 50, false);
   if (!every) return false;
   const double samples = *until / *every;
@@ -473,7 +474,7 @@ bool run_costly(const Args& a, double n_cap = 2000, double until_cap = 20,
   if (*n > n_cap || *until > until_cap) return true;
   if (min_every > 0.0 && *every < min_every) return true;
   if (samples > (checkpoints ? 60 : 2000)) return true;
-  const double replicas = std::max(1.0, *threads / 2);
+  const double replicas = std::max(1.0, *copies / 2) * (*threads > 8 ? 2.0 : 1.0);
   if (*n * samples * replicas > 1e6) return true;
   if (*n * *until * replicas > 2e4 * (n_cap / 2000)) return true;
   // EDMD collisions per particle and time grow as 1 / (1 - packing / jamming) (1D: exactly).
@@ -497,14 +498,15 @@ bool bench_costly(const Args& a) {
   const auto n = extreme_value(a, {"--n", "-n"}, 2, max_n, 100000, true, true);
   const auto reps = extreme_value(a, {"--reps"}, 1, 100, 3);
   const auto coll = extreme_value(a, {"--min-collisions"}, 1000, 1e12, 5e6);
-  const auto threads = extreme_value(a, {"--threads", "-j"}, 1, 64, 1);
+  const auto threads = extreme_value(a, {"--threads", "-j"}, 1, 64, 1, true, true);
   const auto dim = extreme_value(a, {"--dim", "-d"}, 1, 6, 6, true, true);
   if (!n || !reps || !coll || !threads || !dim) return false;
   bool edmd = false;
   for (const auto& e : values_of(a, {"--engine"}))
     edmd = edmd || contains_nocase(e, "edmd") || contains_nocase(e, "all");
   const std::size_t points = values_of(a, {"--n", "-n"}, true).size() *
-                             std::max<std::size_t>(1, values_of(a, {"--dim", "-d"}, true).size());
+                             std::max<std::size_t>(1, values_of(a, {"--dim", "-d"}, true).size()) *
+                             std::max<std::size_t>(1, values_of(a, {"--threads", "-j"}, true).size());
   if (*n > 2000 || *reps > 3 || *coll > 1e4 || *threads > 8 || points > 12) return true;
   if (edmd && *dim >= 6 && (*n > 150 || *reps * *coll > 3000)) return true;
   return false;
@@ -811,6 +813,7 @@ Command dsmc_run(Rng& r) {
   }
   if (r.chance(0.15)) c.opts.push_back({"--temperature", fmt_double(0.1 + 4 * r.unit())});
   if (r.chance(0.1)) c.opts.push_back({"--threads", std::to_string(r.range(1, 3))});
+  if (r.chance(0.1)) c.opts.push_back({"--replicas", std::to_string(r.range(1, 3))});
   add_common_run_extras(r, c, until);
   return c;
 }

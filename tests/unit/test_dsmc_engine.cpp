@@ -154,7 +154,7 @@ TEST_CASE("DSMC: bad configurations throw InvalidInput", "[dsmc]") {
 }
 
 // The engine tests a batch of candidates at once and re-tests those that share a particle
-// with a collision taken before them, or all pending ones when the bound G changes. The
+// with a collision taken before them (each epoch, with its bound G, starts a new batch). The
 // self-check re-tests every pending candidate against the state of the moment before each
 // step; a missed re-test shows up as a failure. Small N makes shared particles frequent
 // (N = 3: nearly every later candidate in a batch shares one with a collision), the cube

@@ -38,21 +38,35 @@
 // solutions of momentum and energy conservation), so the velocity distribution never
 // relaxes; 1D scenes therefore use two species with different masses.
 //
-// Speed: candidates come in batches of 16. A batch (pairs and acceptance uniforms) is
-// drawn one batch ahead and its velocities prefetched (random access to N = 1e6 velocities
-// is cache-miss bound); then all 16 are tested at once - no velocity changes in between,
-// so the loads overlap and no branch waits on them - and the accepted ones are taken in
-// order (count-trailing-zeros on the acceptance mask). Exactness is kept by re-testing:
-// after a collision, the later candidates of the batch that share one of its two
-// particles; after a change of the bound G, the whole rest of the batch. A self-check mode
-// (set_self_check) re-tests every pending candidate before each step and counts
-// disagreements; tests/unit/test_dsmc_engine.cpp requires zero (and fails without either
-// re-test). The candidates and the scattering directions use xoshiro256++ (FastRng in
-// rng.hpp) kept in registers, not the 128-bit-multiply PCG64 of the rest of the code.
-// Hard spheres accept by comparing squares, so a rejected candidate costs no square root;
-// equal-mass scenes compile the mass weights to 1/2; the velocity array is advised onto
-// transparent huge pages (dsmc/huge_pages.hpp). Observers are called every `every` time
-// units, never per collision.
+// Random numbers are counter-based (counter_rng.hpp): candidate number K of the run (K = 0,
+// 1, 2, ... over all epochs) draws its pair, its acceptance uniform and its scattering
+// direction from Philox4x32-10 keyed by the seed, with K in the counter. What candidate K
+// draws therefore does not depend on which thread processes it or when; only the Poisson
+// counts and order-statistic times of the epochs come from a sequential stream.
+//
+// One thread (set_threads(1)): candidates come in batches of 16. A batch (pairs and
+// acceptance uniforms) is drawn one batch ahead and its velocities prefetched (random access
+// to N = 1e6 velocities is cache-miss bound); then all 16 are tested at once - no velocity
+// changes in between, so the loads overlap and no branch waits on them - and the accepted
+// ones are taken in order (count-trailing-zeros on the acceptance mask). Exactness is kept
+// by re-testing: after a collision, the later candidates of the batch that share one of its
+// two particles; after a change of the bound G, the whole rest of the batch.
+//
+// Several threads (set_threads(T)): candidates are taken in blocks of a few per cent of N.
+// In a block, the candidates that are the first on both their particles are decided and
+// applied by all threads at once; the rest follow in order on one thread
+// (dsmc/level_schedule.hpp). A raise of the bound at candidate k* ends the epoch there, as in
+// the sequential process: candidates after k* that were already applied are undone from a
+// copy of their old velocities. The state after every call is bit for bit the state of the
+// one-thread engine, for every T (tests/unit/test_dsmc_parallel.cpp).
+//
+// A self-check mode (set_self_check) re-tests every pending candidate before each step of
+// the one-thread loop and, with threads, replays each block sequentially on a copy of the
+// velocities; it counts disagreements (tests/unit/test_dsmc_engine.cpp and
+// test_dsmc_parallel.cpp require zero). Hard spheres accept by comparing squares, so a
+// rejected candidate costs no square root; equal-mass scenes compile the mass weights to
+// 1/2; the velocity array is advised onto transparent huge pages (dsmc/huge_pages.hpp).
+// Observers are called every `every` time units, never per collision.
 #pragma once
 
 #include <algorithm>
@@ -62,14 +76,18 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <random>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "hypergas/checkpoint.hpp"
+#include "hypergas/counter_rng.hpp"
 #include "hypergas/dsmc/config.hpp"
 #include "hypergas/dsmc/huge_pages.hpp"
+#include "hypergas/dsmc/level_schedule.hpp"
 #include "hypergas/dsmc/majorant.hpp"
 #include "hypergas/dsmc/models.hpp"
 #include "hypergas/dsmc/time_unit.hpp"
@@ -78,6 +96,7 @@
 #include "hypergas/observer.hpp"
 #include "hypergas/particles.hpp"
 #include "hypergas/rng.hpp"
+#include "hypergas/thread_team.hpp"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -107,7 +126,7 @@ class Engine {
   /// cfg.n and cfg.init are ignored. Total momentum should be zero (see time_unit.hpp).
   Engine(const Config& cfg, ParticlesT particles)
       : cfg_(cfg), p_(std::move(particles)), model_(make_model(cfg)), rng_(Rng(cfg.seed).split(2)),
-        pairs_(fast_stream(cfg.seed, 4)), coll_(fast_stream(cfg.seed, 5)) {
+        draws_(cfg.seed, Domain::dsmc_candidate) {
     cfg_.n = p_.size();
     validate(cfg_);  // also checks 2 <= n < 2^32
     n_ = static_cast<std::uint32_t>(p_.size());
@@ -115,7 +134,6 @@ class Engine {
     detail::advise_huge_pages(p_.velocity_data().data(),
                               p_.velocity_data().size() * sizeof(double));
     retune(true);
-    generate(batch_[1 - cur_]);  // the batch after the (empty) current one
   }
 
   /// Restores an engine saved by io() (hypergas/checkpoint.hpp); it continues bit for bit as
@@ -123,20 +141,22 @@ class Engine {
   /// dimension, model or feature set.
   Engine(const Config& cfg, checkpoint::Reader& in)
       : cfg_(cfg), model_(make_model(cfg)), rng_(Rng(cfg.seed).split(2)),
-        pairs_(fast_stream(cfg.seed, 4)), coll_(fast_stream(cfg.seed, 5)) {
+        draws_(cfg.seed, Domain::dsmc_candidate) {
     io(in);
   }
+  Engine(Engine&&) noexcept = default;
+  Engine& operator=(Engine&&) noexcept = default;
 
-  /// Saves or restores the complete state: velocities, the three random streams, the
-  /// majorant, the epoch's position in the candidate batches and the counters.
+  /// Saves or restores the complete state: velocities, the epochs' random stream, the
+  /// majorant and the counters (the candidates' draws are functions of their number, so the
+  /// number of candidates so far is their whole state). The thread count is not state.
   template <class Archive>
   void io(Archive& a) {
-    static_assert(std::is_trivially_copyable_v<Rng> && std::is_trivially_copyable_v<FastRng> &&
-                  std::is_trivially_copyable_v<Model> && std::is_trivially_copyable_v<Config>);
+    static_assert(std::is_trivially_copyable_v<Rng> && std::is_trivially_copyable_v<Model> &&
+                  std::is_trivially_copyable_v<Config>);
     a.tag(identity());
     a(cfg_, p_, model_, rng_, n_, c_, lambda_, bound_, raise_to_, time_, observed_at_);
-    a(collisions_, candidates_, since_scan_, pairs_, coll_, batch_, cur_, pos_, mask_);
-    a(tested_g_, self_check_, check_failures_, species_w_);
+    a(collisions_, candidates_, since_scan_, self_check_, check_failures_, species_w_);
     if (p_.size() != n_) throw InvalidInput("checkpoint: particle count does not match");
   }
   /// "dsmc D=3 model=hs species=0": what a checkpoint must match.
@@ -204,7 +224,8 @@ class Engine {
   double collisions_per_particle() const { return 2.0 * static_cast<double>(collisions_) / n_; }
   /// The particles (velocities in units with species-0 mass 1).
   const ParticlesT& particles() const { return p_; }
-  /// Bytes of per-particle storage (the engine itself stores nothing per particle).
+  /// Bytes of per-particle storage: the velocities (the engine and its thread team store
+  /// nothing per particle).
   double bytes_per_particle() const { return p_.bytes_per_particle(); }
   /// Rate constant c: pair rate c |g|^a / (N - 1) per mean collision time.
   double rate_constant() const { return c_; }
@@ -213,6 +234,27 @@ class Engine {
   /// decisions that differ from the batch's (see process()); a correct engine counts 0.
   void set_self_check(bool on) { self_check_ = on; }
   std::uint64_t self_check_failures() const { return check_failures_; }
+  /// Runs one system on `threads` threads (1 .. 256). The result is bit for bit the same for
+  /// every thread count; `block` (candidates per parallel block, 0: chosen from N) only
+  /// changes the speed. Below about 20000 particles several threads would only wait for
+  /// each other, so the one-thread loop runs unless a block size is given.
+  void set_threads(int threads, std::uint32_t block = 0) {
+    if (threads < 1 || threads > 256)
+      throw InvalidInput("DSMC: threads must be in 1..256, got " + std::to_string(threads));
+    const std::uint32_t auto_block = std::clamp<std::uint32_t>(n_ / 64, 1024, 8192u * threads);
+    const bool parallel = block > 0 || (threads > 1 && n_ >= 20000);
+    block_ = parallel ? (block > 0 ? block : auto_block) : 0;
+    if (!parallel) {
+      team_.reset();
+      par_.reset();
+      return;
+    }
+    if (!team_ || team_->size() != threads) team_ = std::make_unique<ThreadTeam>(threads);
+    par_ = std::make_unique<Parallel>();
+    par_->lane.resize(static_cast<std::size_t>(threads));
+  }
+  /// Threads that process one candidate block together (1: the one-thread loop).
+  int threads() const { return team_ ? team_->size() : 1; }
   /// Current majorant bound G >= |g| (velocity units).
   double bound() const { return bound_.bound(); }
   const Config& config() const { return cfg_; }
@@ -225,8 +267,23 @@ class Engine {
   struct Batch {
     std::array<std::uint32_t, B> i{}, j{};
     std::array<double, B> u{};  // acceptance uniforms (models with a majorant)
+    std::uint32_t skip = 0;     // bit c: candidate c is not processed here (deferred or past the end)
   };
 
+  /// One thread's pass over a chunk of candidates and what it leaves for the block's end.
+  struct Lane {
+    std::uint32_t offset = 0;              // block position of the chunk's first candidate
+    std::vector<std::uint32_t> deferred;   // block positions, ascending
+    std::vector<std::uint32_t> saved_at;   // block positions of applied candidates, ascending
+    std::vector<std::uint32_t> saved_ij;   // their pairs
+    std::vector<double> saved;             // their old velocities (2 D each)
+    detail::ParticleFilter earlier, held;     // particles of earlier chunks; of deferred ones
+    std::uint64_t collisions = 0;
+    bool raised = false;                   // exact scheme: the lane stopped at a raise
+    std::uint64_t raise_at = 0;            // block position of the raising candidate
+    double raise_s2 = 0.0;
+    char pad[64];                          // two lanes' counters never share a cache line
+  };
   static ParticlesT initial_particles(const Config& cfg) {
     validate(cfg);
     ParticlesT p(cfg.n);
@@ -240,59 +297,65 @@ class Engine {
     else
       return Model{};
   }
-  static FastRng fast_stream(std::uint64_t seed, std::uint64_t k) {
-    Rng r = Rng(seed).split(k);
-    return FastRng(r);
-  }
 
   /// Unbiased integer in [0, range) from 32 random bits x (Lemire's multiply-shift with
-  /// rejection); redraws fresh bits from g on rejection.
-  static std::uint32_t bounded32(FastRng& g, std::uint32_t x, std::uint32_t range) {
+  /// rejection); on rejection (probability below range / 2^32) takes fresh words of
+  /// candidate K from word 2^20 on, far from those its scattering uses.
+  std::uint32_t bounded32(std::uint64_t K, std::uint32_t x, std::uint32_t range) const {
     std::uint64_t m = std::uint64_t(x) * range;
     auto l = static_cast<std::uint32_t>(m);
-    if (l < range) {
+    if (l < range) [[unlikely]] {
       const std::uint32_t t = (0u - range) % range;
+      EventStream more(draws_, K, std::uint64_t{1} << 20);
       while (l < t) {
-        x = static_cast<std::uint32_t>(g() >> 32);
+        x = static_cast<std::uint32_t>(more() >> 32);
         m = std::uint64_t(x) * range;
         l = static_cast<std::uint32_t>(m);
       }
     }
     return static_cast<std::uint32_t>(m >> 32);
   }
-  /// Draws a batch of B candidates: uniformly chosen ordered pairs of distinct particles
-  /// and their acceptance uniforms; prefetches the pairs' velocities.
-  void generate(Batch& b) {
-    FastRng g = pairs_;  // a local copy stays in registers
-    const double* v = p_.velocity_data().data();
-    const std::uint32_t n = n_;
-    for (int c = 0; c < B; ++c) {
-      const std::uint64_t r = g();
-      const std::uint32_t i = bounded32(g, static_cast<std::uint32_t>(r >> 32), n);
-      std::uint32_t j = bounded32(g, static_cast<std::uint32_t>(r), n - 1);
-      j += (j >= i);
-      b.i[c] = i;
-      b.j[c] = j;
-      if constexpr (Model::needs_majorant) b.u[c] = g.uniform();
-      __builtin_prefetch(v + std::size_t(i) * stride, 1);
-      __builtin_prefetch(v + std::size_t(j) * stride, 1);
-    }
-    pairs_ = g;
+  /// Candidate K: a uniformly chosen ordered pair of distinct particles (word 0) and its
+  /// acceptance uniform (word 1).
+  void draw(std::uint64_t K, std::uint32_t& i, std::uint32_t& j, double& u) const {
+    const std::uint64_t r = draws_.word(K, 0);
+    i = bounded32(K, static_cast<std::uint32_t>(r >> 32), n_);
+    j = bounded32(K, static_cast<std::uint32_t>(r), n_ - 1);
+    j += (j >= i);
+    u = hypergas::detail::unit_interval(draws_.word(K, 1));
   }
-  /// Whether candidate c of batch b is accepted with the velocities of now and bound G.
-  bool test(const Batch& b, int c, double G) const {
+  /// Whether pair (i, j) with acceptance uniform u is accepted now with bound G.
+  bool accepts(std::uint32_t i, std::uint32_t j, double u, double G) const {
     if constexpr (Model::needs_majorant) {
       const double* v = p_.velocity_data().data();
       double g2 = 0.0;
       for (int d = 0; d < D; ++d) {
-        const double x = v[std::size_t(b.i[c]) * stride + d] - v[std::size_t(b.j[c]) * stride + d];
+        const double x = v[std::size_t(i) * stride + d] - v[std::size_t(j) * stride + d];
         g2 += x * x;
       }
-      return model_.accept(g2, b.u[c], G);
+      return model_.accept(g2, u, G);
     } else {
-      (void)b, (void)c, (void)G;
+      (void)i, (void)j, (void)u, (void)G;
       return true;
     }
+  }
+  /// Whether candidate c of batch b is accepted with the velocities of now and bound G.
+  bool test(const Batch& b, int c, double G) const { return accepts(b.i[c], b.j[c], b.u[c], G); }
+  /// Collides pair (i, j) as candidate K (its scattering words from word 2 of K on);
+  /// returns the larger of the two new squared speeds.
+  double collide(std::uint32_t i, std::uint32_t j, std::uint64_t K) {
+    using Map = Eigen::Map<Vec<D>>;
+    double* v = p_.velocity_data().data();
+    Map vi(v + std::size_t(i) * stride), vj(v + std::size_t(j) * stride);
+    EventStream rng(draws_, K, 2);
+    const Vec<D> g = vi - vj;
+    const double gn = std::sqrt(g.squaredNorm());
+    const Vec<D> delta = Model::template deflect<D>(g, gn, rng) - g;
+    apply_deflection<D>(p_, i, j, vi, vj, delta);
+    if constexpr (Model::needs_majorant)
+      return std::max(vi.squaredNorm(), vj.squaredNorm());
+    else
+      return 0.0;
   }
   /// Bit c set: candidate c of batch b involves particle i or j (SSE2 compares four
   /// candidates at a time, which is every x86-64; a plain loop elsewhere).
@@ -317,25 +380,6 @@ class Engine {
     return m;
 #endif
   }
-  /// Self-check: every pending mask bit must equal a fresh test with the state of now.
-  void verify(double G) {
-    for (int c = pos_; c < B; ++c) {
-      const bool fresh = test(batch_[cur_], c, G);
-      if (fresh != bool((mask_ >> c) & 1u)) {
-        ++check_failures_;
-        mask_ ^= 1u << c;
-      }
-    }
-  }
-  /// Tests candidates from..B-1 of the current batch with bound G (sets their mask bits).
-  void test_from(int from, double G) {
-    const Batch& b = batch_[cur_];
-    std::uint32_t mask = mask_ & ((1u << from) - 1u);
-    for (int c = from; c < B; ++c) mask |= std::uint32_t(test(b, c, G)) << c;
-    mask_ = mask;
-    tested_g_ = G;
-  }
-
   /// Resets the majorant from an exact scan (when `force` or after enough candidates).
   void retune(bool force) {
     if constexpr (!Model::needs_majorant) {
@@ -357,66 +401,332 @@ class Engine {
   /// Processes up to m candidates. Exact: stops after an accepted collision that leaves a
   /// speed above the bound and returns the number processed (raise_to_ holds the new
   /// maximum squared speed). NTC: never stops; records the largest such speed.
-  ///
-  /// Batches: every candidate of the current batch is tested at once (no velocity is
-  /// written in between, so the loads overlap and no branch depends on them); then the
-  /// accepted ones are taken in order. A collision changes two velocities only, so after
-  /// it the later candidates that share a particle with it are tested again; a change of
-  /// the bound G (between calls) re-tests the rest of the batch. Each candidate is thus
-  /// decided with the state at its turn, exactly as one at a time.
   template <bool Exact>
   std::uint64_t process(std::uint64_t m) {
-    double* v = p_.velocity_data().data();
-    const double G = bound_.bound();
-    using Map = Eigen::Map<Vec<D>>;
-    if (pos_ < B && G != tested_g_) test_from(pos_, G);
-    FastRng rng = coll_;  // scattering directions; a local copy stays in registers
-    std::uint64_t k = 0;
-    while (k < m) {
-      if (pos_ == B) {
-        cur_ = 1 - cur_;
-        generate(batch_[1 - cur_]);
-        test_from(0, G);
-        pos_ = 0;
-      }
-      if (self_check_) [[unlikely]] verify(G);
-      const std::uint64_t left = m - k;
-      const std::uint32_t rest = mask_ >> pos_;
-      if (rest == 0 || std::uint64_t(std::countr_zero(rest)) >= left) {
-        // no accepted candidate among the next min(left, B - pos_)
-        const std::uint64_t take = std::min<std::uint64_t>(left, std::uint64_t(B - pos_));
-        pos_ += static_cast<int>(take);
-        k += take;
-        continue;
-      }
-      const int c = pos_ + std::countr_zero(rest);
-      k += static_cast<std::uint64_t>(c - pos_) + 1;
-      pos_ = c + 1;
-      const Batch& b = batch_[cur_];
-      const std::uint32_t i = b.i[c], j = b.j[c];
-      Map vi(v + std::size_t(i) * stride), vj(v + std::size_t(j) * stride);
-      const Vec<D> g = vi - vj;
-      const double gn = std::sqrt(g.squaredNorm());
-      const Vec<D> delta = Model::template deflect<D>(g, gn, rng) - g;
-      apply_deflection<D>(p_, i, j, vi, vj, delta);
-      ++collisions_;
-      if constexpr (Model::needs_majorant) {
-        // later candidates of the batch that share particle i or j: decided again
-        for (std::uint32_t hit = sharing(b, i, j) >> pos_ << pos_; hit != 0; hit &= hit - 1) {
-          const int c2 = std::countr_zero(hit);
-          const std::uint32_t bit = 1u << c2;
-          mask_ = test(b, c2, G) ? (mask_ | bit) : (mask_ & ~bit);
-        }
-        const double s2 = std::max(vi.squaredNorm(), vj.squaredNorm());
-        if (bound_.exceeded_by(s2)) {
-          raise_to_ = std::max(raise_to_, s2);
-          if constexpr (Exact) break;
-        }
-      }
-    }
-    coll_ = rng;
+    const std::uint64_t k = par_ && m >= 4u * block_ ? process_parallel<Exact>(m)
+                                                     : process_serial<Exact>(m);
     candidates_ += k;
     return k;
+  }
+  template <bool Exact>
+  std::uint64_t process_serial(std::uint64_t m) {
+    Lane lane;
+    const std::uint64_t k = run_lane<Exact, false, false>(lane, candidates_, m, bound_.bound());
+    collisions_ += lane.collisions;
+    raise_to_ = std::max(raise_to_, lane.raise_s2);
+    return k;
+  }
+
+  /// Runs candidates first .. first + count - 1 (lane positions 0 .. count - 1) through
+  /// the batch pipeline, in order. Every candidate of the current batch is tested at once
+  /// (no velocity is written in between, so the loads overlap and no branch depends on
+  /// them); then the accepted ones are taken in order. A collision changes two velocities
+  /// only, so after it the later candidates of the batch that share a particle with it are
+  /// tested again. Each candidate is thus decided with the state at its turn, exactly as
+  /// one at a time.
+  ///
+  /// Defer: the lane is a later chunk of a parallel block; a candidate on a particle of an
+  /// earlier chunk (lane.earlier) or of a candidate deferred before it (lane.held) is
+  /// skipped and listed in lane.deferred (dsmc/level_schedule.hpp). Save: the old
+  /// velocities of every applied candidate are kept so that the block can undo them.
+  /// Returns `count`, or (exact scheme) the position after the candidate that raised the
+  /// bound; the lane's collisions and raise are in lane.
+  template <bool Exact, bool Defer, bool Save>
+  std::uint64_t run_lane(Lane& lane, std::uint64_t first, std::uint64_t count, double G) {
+    const double* const v = p_.velocity_data().data();
+    std::array<Batch, 2> batch;
+    const auto generate = [&](Batch& b, std::uint64_t at) {
+      b.skip = 0;
+      for (int c = 0; c < B; ++c) {
+        const std::uint64_t q = at + std::uint64_t(c);
+        if (q >= count) {
+          b.skip |= 1u << c;
+          b.i[c] = b.j[c] = 0;
+          continue;
+        }
+        draw(first + q, b.i[c], b.j[c], b.u[c]);
+        if constexpr (Defer) {
+          if (lane.earlier.contains(b.i[c]) | lane.earlier.contains(b.j[c]) |
+              lane.held.contains(b.i[c]) | lane.held.contains(b.j[c])) {
+            b.skip |= 1u << c;
+            lane.deferred.push_back(lane.offset + static_cast<std::uint32_t>(q));
+            lane.held.insert(b.i[c]);
+            lane.held.insert(b.j[c]);
+            continue;
+          }
+        }
+        __builtin_prefetch(v + std::size_t(b.i[c]) * stride, 1);
+        __builtin_prefetch(v + std::size_t(b.j[c]) * stride, 1);
+      }
+    };
+    const auto test_all = [&](const Batch& b) {
+      std::uint32_t mask = 0;
+      for (int c = 0; c < B; ++c) mask |= std::uint32_t(test(b, c, G)) << c;
+      return mask & ~b.skip;
+    };
+    generate(batch[0], 0);
+    generate(batch[1], B);
+    int cur = 0;
+    for (std::uint64_t at = 0; at < count; at += B) {
+      const Batch& b = batch[std::size_t(cur)];
+      std::uint32_t mask = test_all(b);
+      int pos = 0;  // next candidate of the batch
+      for (;;) {
+        if (self_check_) [[unlikely]]
+          verify(b, pos, G, mask);
+        const std::uint32_t rest = mask >> pos << pos;
+        if (rest == 0) break;
+        const int c = std::countr_zero(rest);
+        pos = c + 1;
+        const std::uint32_t i = b.i[c], j = b.j[c];
+        if constexpr (Save) {
+          lane.saved_at.push_back(lane.offset + static_cast<std::uint32_t>(at + std::uint64_t(c)));
+          lane.saved_ij.push_back(i);
+          lane.saved_ij.push_back(j);
+          for (int d = 0; d < D; ++d) lane.saved.push_back(v[std::size_t(i) * stride + d]);
+          for (int d = 0; d < D; ++d) lane.saved.push_back(v[std::size_t(j) * stride + d]);
+        }
+        const double s2 = collide(i, j, first + at + std::uint64_t(c));
+        ++lane.collisions;
+        if constexpr (Model::needs_majorant) {
+          // later candidates of the batch that share particle i or j: decided again
+          for (std::uint32_t hit = (sharing(b, i, j) >> pos << pos) & ~b.skip; hit != 0;
+               hit &= hit - 1) {
+            const int c2 = std::countr_zero(hit);
+            const std::uint32_t bit = 1u << c2;
+            mask = test(b, c2, G) ? (mask | bit) : (mask & ~bit);
+          }
+          if (bound_.exceeded_by(s2)) {
+            lane.raise_s2 = std::max(lane.raise_s2, s2);
+            if constexpr (Exact) {
+              lane.raised = true;
+              return at + std::uint64_t(c) + 1;
+            }
+          }
+        }
+      }
+      generate(batch[std::size_t(cur)], at + 2 * B);
+      cur = 1 - cur;
+    }
+    return count;
+  }
+  /// Self-check: every pending mask bit of batch b must equal a fresh test with the state
+  /// of now; counts and corrects the differences.
+  void verify(const Batch& b, int from, double G, std::uint32_t& mask) {
+    for (int c = from; c < B; ++c) {
+      if ((b.skip >> c) & 1u) continue;
+      const bool fresh = test(b, c, G);
+      if (fresh != bool((mask >> c) & 1u)) {
+        ++check_failures_;
+        mask ^= 1u << c;
+      }
+    }
+  }
+
+  /// process() on the thread team, in blocks of block_ candidates cut into one chunk per
+  /// thread (dsmc/level_schedule.hpp). Same result as process_serial(), bit for bit.
+  ///
+  /// Per block b, two phases separated by barriers:
+  ///  1. each thread runs its chunk through the batch pipeline (run_lane), deferring the
+  ///     candidates that may depend on an earlier chunk; threads after the first keep the
+  ///     old velocities of what they apply;
+  ///  2. thread 0 takes the deferred candidates in block order up to the first raise of
+  ///     the bound, undoes what later chunks applied after that raise and ends the epoch
+  ///     there; meanwhile every thread draws its chunk of block b + 1 and fills its set.
+  template <bool Exact>
+  std::uint64_t process_parallel(std::uint64_t m) {
+    Parallel& P = *par_;
+    ThreadTeam& team = *team_;
+    const int T = team.size();
+    const double G = bound_.bound();
+    const std::uint64_t K0 = candidates_;
+    std::uint64_t done = 0;
+    bool stop = false;
+    std::vector<double> before;  // self-check: the velocities at the start of the block
+    if (self_check_) save_velocities(before);
+    const auto block_after = [&](std::uint64_t start) {
+      return static_cast<std::uint32_t>(std::min<std::uint64_t>(block_, m - start));
+    };
+    const auto share = [T](std::uint32_t nb, int t) {
+      return std::pair<std::uint32_t, std::uint32_t>(
+          static_cast<std::uint32_t>(std::uint64_t(nb) * t / T),
+          static_cast<std::uint32_t>(std::uint64_t(nb) * (t + 1) / T));
+    };
+    // thread t's set: the particles of the chunks before its own (drawn again here, so that
+    // the set is written and read by one core only)
+    const auto prepare = [&](std::uint64_t start, std::uint32_t nb, int t) {
+      Lane& lane = P.lane[std::size_t(t)];
+      const std::uint32_t lo = share(nb, t).first;
+      lane.earlier.reserve(2 * std::size_t(lo));
+      for (std::uint32_t c = 0; c < lo; ++c) {
+        std::uint32_t i, j;
+        double u;
+        draw(K0 + start + c, i, j, u);
+        lane.earlier.insert(i);
+        lane.earlier.insert(j);
+      }
+    };
+
+    team.run([&](int t) {
+      Lane& lane = P.lane[std::size_t(t)];
+      std::uint64_t start = 0;
+      std::uint32_t nb = block_after(0);
+      prepare(0, nb, t);
+      team.sync();
+      for (;;) {
+        const auto [lo, hi] = share(nb, t);
+        // 1. the chunk, deferring what may depend on earlier chunks
+        lane.offset = lo;
+        lane.deferred.clear();
+        lane.saved_at.clear();
+        lane.saved_ij.clear();
+        lane.saved.clear();
+        lane.held.reserve(std::size_t(hi - lo) / 16);
+        lane.collisions = 0;
+        lane.raise_s2 = 0.0;
+        lane.raised = false;
+        const std::uint64_t first = K0 + start + lo;
+        const std::uint64_t ran =
+            t == 0 ? run_lane<Exact, false, false>(lane, first, hi - lo, G)
+                   : run_lane<Exact, true, Exact && Model::needs_majorant>(lane, first, hi - lo, G);
+        lane.raise_at = lane.raised ? lo + ran - 1 : nb;
+        team.sync();
+        // 2. the block's end on thread 0; the next block's sets on all
+        const std::uint64_t next = start + nb;
+        const std::uint32_t nn = next < m ? block_after(next) : 0;
+        if (t == 0) {
+          bool raised = false;
+          const std::uint32_t processed = finish_block<Exact>(K0 + start, nb, G, raised);
+          if (self_check_) [[unlikely]] {
+            check_block<Exact>(before, K0 + start, processed, raised, G);
+            save_velocities(before);
+          }
+          done += processed;
+          stop = raised;
+        }
+        if (nn > 0) prepare(next, nn, t);
+        team.sync();
+        if (stop || nn == 0) return;  // the same decision on every thread
+        start = next;
+        nb = nn;
+      }
+    });
+    return done;
+  }
+
+  /// Phase 2 of a block on thread 0: the deferred candidates in block order up to the
+  /// first raise (exact scheme), the undoing of what later chunks applied after it, the
+  /// counters. Returns the number of candidates the block processed (up to and including
+  /// the raising one); `raised` tells whether the epoch ends there.
+  template <bool Exact>
+  std::uint32_t finish_block(std::uint64_t base, std::uint32_t nb, double G, bool& raised) {
+    Parallel& P = *par_;
+    std::uint32_t stop_at = nb;  // block position of the first raise
+    double stop_s2 = 0.0, ntc_raise = 0.0;
+    std::uint64_t coll = 0;
+    for (const Lane& w : P.lane) {
+      if (w.raise_at < stop_at) stop_at = static_cast<std::uint32_t>(w.raise_at), stop_s2 = w.raise_s2;
+      coll += w.collisions;
+      ntc_raise = std::max(ntc_raise, w.raise_s2);
+    }
+    bool end = false;
+    for (const Lane& w : P.lane) {
+      for (const std::uint32_t c : w.deferred) {
+        if (c >= stop_at) {
+          end = true;
+          break;
+        }
+        std::uint32_t i, j;
+        double u;
+        draw(base + c, i, j, u);
+        if (!accepts(i, j, u, G)) continue;
+        const double s2 = collide(i, j, base + c);
+        ++coll;
+        if constexpr (Model::needs_majorant) {
+          if (bound_.exceeded_by(s2)) {
+            if constexpr (Exact) {
+              stop_at = c, stop_s2 = s2;
+              end = true;
+              break;
+            } else {
+              ntc_raise = std::max(ntc_raise, s2);
+            }
+          }
+        }
+      }
+      if (end) break;
+    }
+    if constexpr (Exact && Model::needs_majorant) {
+      if (stop_at < nb) {
+        // undo, newest first, what chunks after the raise applied (their particles are
+        // touched by no other chunk and by no applied deferred candidate)
+        double* v = p_.velocity_data().data();
+        for (const Lane& w : P.lane)
+          for (std::size_t a = w.saved_at.size(); a-- > 0;) {
+            if (w.saved_at[a] <= stop_at) break;
+            const std::uint32_t i = w.saved_ij[2 * a], j = w.saved_ij[2 * a + 1];
+            const double* o = w.saved.data() + a * 2 * D;
+            for (int d = 0; d < D; ++d) {
+              v[std::size_t(i) * stride + d] = o[d];
+              v[std::size_t(j) * stride + d] = o[D + d];
+            }
+            --coll;
+          }
+        raise_to_ = std::max(raise_to_, stop_s2);
+        collisions_ += coll;
+        raised = true;
+        return stop_at + 1;
+      }
+    } else if constexpr (Model::needs_majorant) {
+      raise_to_ = std::max(raise_to_, ntc_raise);
+    }
+    collisions_ += coll;
+    return nb;
+  }
+  /// Self-check: the velocity components into / out of a flat copy.
+  void save_velocities(std::vector<double>& to) const {
+    to.resize(std::size_t(n_) * D);
+    const double* v = p_.velocity_data().data();
+    for (std::size_t q = 0; q < n_; ++q)
+      for (int d = 0; d < D; ++d) to[q * D + d] = v[q * stride + d];
+  }
+  void load_velocities(const std::vector<double>& from) {
+    double* v = p_.velocity_data().data();
+    for (std::size_t q = 0; q < n_; ++q)
+      for (int d = 0; d < D; ++d) v[q * stride + d] = from[q * D + d];
+  }
+
+  /// Self-check of one parallel block: replays candidates base .. base + count - 1 one at
+  /// a time on `before` (the velocities at the block's start) and counts the particles
+  /// whose velocities differ from the engine's, plus one if the replay raises the bound
+  /// elsewhere than the engine (`raised`: the engine ended the epoch at the last one).
+  template <bool Exact>
+  void check_block(const std::vector<double>& before, std::uint64_t base, std::uint32_t count,
+                   bool raised, double G) {
+    std::vector<double> after;
+    save_velocities(after);
+    load_velocities(before);
+    bool replay_raised = false;
+    for (std::uint32_t c = 0; c < count && !replay_raised; ++c) {
+      std::uint32_t i, j;
+      double u;
+      draw(base + c, i, j, u);
+      if (!accepts(i, j, u, G)) continue;
+      const double s2 = collide(i, j, base + c);
+      replay_raised = Exact && Model::needs_majorant && bound_.exceeded_by(s2);
+      if (replay_raised != (raised && c + 1 == count)) ++check_failures_;
+    }
+    if (raised && !replay_raised) ++check_failures_;
+    std::vector<double> replay;
+    save_velocities(replay);
+    for (std::size_t q = 0; q < n_; ++q)
+      for (int d = 0; d < D; ++d)
+        if (std::bit_cast<std::uint64_t>(replay[q * D + d]) !=
+            std::bit_cast<std::uint64_t>(after[q * D + d])) {
+          ++check_failures_;
+          break;
+        }
+    load_velocities(after);
   }
 
   /// Advances to t_end with the configured scheme.
@@ -484,16 +794,18 @@ class Engine {
   double time_ = 0.0;
   double observed_at_ = -1.0;
   std::uint64_t collisions_ = 0, candidates_ = 0, since_scan_ = 0;
-  FastRng pairs_;                  // the candidates' random stream
-  FastRng coll_;                   // the collisions' random stream (scattering)
-  std::array<Batch, 2> batch_{};   // the current batch and the next one
-  int cur_ = 0;                    // index of the current batch
-  int pos_ = B;                    // next candidate of the current batch (B: none left)
-  std::uint32_t mask_ = 0;         // bit c: candidate c of the current batch is accepted
-  double tested_g_ = 0.0;          // the bound the mask was computed with
+  EventDraws draws_;               // candidate K's draws: a function of (seed, K)
   bool self_check_ = false;
   std::uint64_t check_failures_ = 0;
   std::array<double, max_species> species_w_{};
+
+  // The thread team and its lanes (not state: rebuilt by set_threads).
+  struct Parallel {
+    std::vector<Lane> lane;  // per thread
+  };
+  std::uint32_t block_ = 0;
+  std::unique_ptr<ThreadTeam> team_;
+  std::unique_ptr<Parallel> par_;
 };
 
 }  // namespace hypergas::dsmc

@@ -43,15 +43,16 @@ struct DsmcBenchOptions {
   double min_collisions = 5e6;  ///< accepted collisions per timed run
   std::string model{dsmc::HardSpheres::name};  ///< collision model (registry::model_names())
   std::uint64_t seed = 1;
-  int threads = 1;  ///< > 1: also time that many independent replicas run concurrently
+  std::vector<int> threads = {1};  ///< thread counts of the one system, each timed (1..256)
   bool cpu_clock = false;  ///< rates per CPU second of the thread instead of per wall second
 };
 
-/// Runs the DSMC throughput study and prints one JSON line per (D, N) (and one more per
-/// point with threads > 1) to `out`. Fields: model, dim, n, reps, collisions_per_s (median
-/// accepted collisions per second), candidates_per_s, acceptance, bytes_per_particle,
-/// probe_pair_updates_per_s, probe_ratio, threads, clock. Throws InvalidInput for an
-/// unknown model or a dimension outside 1..6.
+/// Runs the DSMC throughput study and prints one JSON line per (D, N, thread count) to
+/// `out`. Fields: model, dim, n, reps, collisions_per_s (median accepted collisions per
+/// second), candidates_per_s, acceptance, bytes_per_particle, probe_pair_updates_per_s,
+/// probe_ratio (one core), threads, speedup (against the first thread count, scaled by
+/// it), efficiency (speedup / threads), clock. Throws InvalidInput for an unknown model, a
+/// dimension outside 1..6 or a thread count outside 1..256.
 void run_dsmc_bench(std::ostream& out, const DsmcBenchOptions& o = {});
 
 /// One EDMD throughput case: dimension, N, packing fraction, timed collisions, repeats.

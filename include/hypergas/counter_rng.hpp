@@ -34,13 +34,16 @@ class EventDraws {
       : key_(detail::mix64(seed ^ detail::mix64(static_cast<std::uint64_t>(domain)))),
         overflow_key_(detail::mix64(key_ ^ 0x6a09e667f3bcc909ULL)) {}
   /// Word w of event K: w < 16 from the main sequence, beyond from the overflow sequence.
-  std::uint64_t word(std::uint64_t K, std::uint64_t w) const {
+  [[gnu::always_inline]] std::uint64_t word(std::uint64_t K, std::uint64_t w) const {
     if (w < words_per_event) [[likely]]
       return detail::mix64(key_ + (K * words_per_event + w) * gamma);
-    return detail::mix64(overflow_key_ + detail::mix64(K) + (w - words_per_event) * gamma);
+    return overflow_word(K, w);
   }
 
  private:
+  [[gnu::noinline]] std::uint64_t overflow_word(std::uint64_t K, std::uint64_t w) const {
+    return detail::mix64(overflow_key_ + detail::mix64(K) + (w - words_per_event) * gamma);
+  }
   static constexpr std::uint64_t gamma = 0x9e3779b97f4a7c15ULL;
   std::uint64_t key_;
   std::uint64_t overflow_key_;

@@ -21,6 +21,23 @@ using test_support::ks;
 using test_support::mean_se;
 using test_support::t_threshold;
 
+/// The statistical tests run the engine on two threads in blocks of 1024 candidates, so
+/// that every path of the parallel schedule (deferred candidates, raises of the bound inside
+/// a block) is under their statistics. The gas is bit for bit that of one thread
+/// (tests/unit/test_dsmc_parallel.cpp), so the tests' seeds and tolerances are unchanged.
+/// Replicas that run side by side (for_replicas) stay on one thread each: two teams on two
+/// cores would only wait for each other.
+template <class Engine>
+void on_two_threads(Engine& e) {
+  e.set_threads(2, 1024);
+}
+
+/// Calls f(r) for r = 0 .. R-1, one after another (each replica then uses two threads).
+template <class F>
+void for_replicas_in_turn(int R, F&& f) {
+  for (int r = 0; r < R; ++r) f(r);
+}
+
 /// Mean of |v|^(2k) over particles [b, e).
 template <int D, hypergas::Features F>
 double moment(const hypergas::Particles<D, F>& ps, int k, std::size_t b = 0, std::size_t e = 0) {

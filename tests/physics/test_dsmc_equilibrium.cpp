@@ -27,6 +27,7 @@ void check_rate(double a) {
   cfg.seed = 300 + D;
   cfg.vhs_exponent = a;
   Engine<D, Model> e(cfg);
+  on_two_threads(e);
   std::vector<double> per_block;
   for (int b = 1; b <= 40; ++b) {
     const double c0 = e.collisions_per_particle();
@@ -51,6 +52,7 @@ void check_relaxation(InitialState s, double a) {
   cfg.vhs_exponent = a;
   cfg.init = s;
   Engine<D, Model> e(cfg);
+  on_two_threads(e);
   const double kT = moment(e.particles(), 1) / D;
   const auto [d0, p0] = ks_maxwell(e.particles(), kT);
   e.run_until(25.0);
@@ -161,6 +163,7 @@ TEST_CASE("3D mixture: species temperatures relax to a common value", "[dsmc][ph
   cfg.initial.mass_ratio = 10.0;
   cfg.initial.fraction = 0.3;
   Engine<3, HardSpheres, Features{.species = true}> e(cfg);
+  on_two_threads(e);
   e.run_until(40.0);
   const double Teq = 1.55;
   const double T0 = moment(e.particles(), 1, 0, 14000) / 3.0;

@@ -26,12 +26,13 @@ TEMPLATE_TEST_CASE_SIG("Maxwell molecules: m4 relaxes at rate (D-1)/(2D)", "[dsm
   const std::size_t N = 50000;
   const double T = 3.0 / lam;
   std::vector<double> rates(R);
-  for_replicas(R, [&](int r) {
+  for_replicas_in_turn(R, [&](int r) {
     Config cfg;
     cfg.n = N;
     cfg.init = InitialState::delta;
     cfg.seed = 1000 + 37 * D + r;
     Engine<D, MaxwellMolecules> e(cfg);
+    on_two_threads(e);
     const double m2 = moment(e.particles(), 1);
     const double m4eq = (D + 2.0) / D * m2 * m2;
     std::vector<double> ts, ys;
@@ -58,12 +59,13 @@ TEST_CASE("Maxwell molecules: BKW fourth moment in 3D and 5D", "[dsmc][physics]"
   auto run = [&](auto dim) {
     constexpr int D = decltype(dim)::value;
     std::vector<std::vector<double>> m4(times.size(), std::vector<double>(R));
-    for_replicas(R, [&](int r) {
+    for_replicas_in_turn(R, [&](int r) {
       Config cfg;
       cfg.n = 50000;
       cfg.init = InitialState::bkw;
       cfg.seed = 77 + r;
       Engine<D, MaxwellMolecules> e(cfg);
+      on_two_threads(e);
       for (std::size_t k = 0; k < times.size(); ++k) {
         e.run_until(times[k]);
         m4[k][r] = moment(e.particles(), 2);  // kT = m = 1 exactly after the rescaling

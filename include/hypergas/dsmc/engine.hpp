@@ -241,7 +241,7 @@ class Engine {
   void set_threads(int threads, std::uint32_t block = 0) {
     if (threads < 1 || threads > 256)
       throw InvalidInput("DSMC: threads must be in 1..256, got " + std::to_string(threads));
-    const std::uint32_t auto_block = std::clamp<std::uint32_t>(n_ / 64, 1024, 8192u * threads);
+    const std::uint32_t auto_block = std::clamp<std::uint32_t>(n_ / 64, 2048, 65536);
     const bool parallel = block > 0 || (threads > 1 && n_ >= 20000);
     block_ = parallel ? (block > 0 ? block : auto_block) : 0;
     if (!parallel) {
@@ -318,11 +318,14 @@ class Engine {
   /// Candidate K: a uniformly chosen ordered pair of distinct particles (word 0) and its
   /// acceptance uniform (word 1).
   void draw(std::uint64_t K, std::uint32_t& i, std::uint32_t& j, double& u) const {
+    draw_pair(K, i, j);
+    u = hypergas::detail::unit_interval(draws_.word(K, 1));
+  }
+  void draw_pair(std::uint64_t K, std::uint32_t& i, std::uint32_t& j) const {
     const std::uint64_t r = draws_.word(K, 0);
     i = bounded32(K, static_cast<std::uint32_t>(r >> 32), n_);
     j = bounded32(K, static_cast<std::uint32_t>(r), n_ - 1);
     j += (j >= i);
-    u = hypergas::detail::unit_interval(draws_.word(K, 1));
   }
   /// Whether pair (i, j) with acceptance uniform u is accepted now with bound G.
   bool accepts(std::uint32_t i, std::uint32_t j, double u, double G) const {
@@ -343,7 +346,7 @@ class Engine {
   bool test(const Batch& b, int c, double G) const { return accepts(b.i[c], b.j[c], b.u[c], G); }
   /// Collides pair (i, j) as candidate K (its scattering words from word 2 of K on);
   /// returns the larger of the two new squared speeds.
-  double collide(std::uint32_t i, std::uint32_t j, std::uint64_t K) {
+  [[gnu::always_inline]] double collide(std::uint32_t i, std::uint32_t j, std::uint64_t K) {
     using Map = Eigen::Map<Vec<D>>;
     double* v = p_.velocity_data().data();
     Map vi(v + std::size_t(i) * stride), vj(v + std::size_t(j) * stride);
@@ -435,24 +438,26 @@ class Engine {
   std::uint64_t run_lane(Lane& lane, std::uint64_t first, std::uint64_t count, double G) {
     const double* const v = p_.velocity_data().data();
     std::array<Batch, 2> batch;
+    // (the prefetches stay outside every branch: GCC 12 drops a prefetch behind one)
     const auto generate = [&](Batch& b, std::uint64_t at) {
       b.skip = 0;
+      const bool whole = at + B <= count;
       for (int c = 0; c < B; ++c) {
         const std::uint64_t q = at + std::uint64_t(c);
-        if (q >= count) {
+        if (whole || q < count) {
+          draw(first + q, b.i[c], b.j[c], b.u[c]);
+        } else {
           b.skip |= 1u << c;
           b.i[c] = b.j[c] = 0;
-          continue;
         }
-        draw(first + q, b.i[c], b.j[c], b.u[c]);
         if constexpr (Defer) {
-          if (lane.earlier.contains(b.i[c]) | lane.earlier.contains(b.j[c]) |
-              lane.held.contains(b.i[c]) | lane.held.contains(b.j[c])) {
+          if (((b.skip >> c) & 1u) == 0 &&
+              (lane.earlier.contains(b.i[c]) | lane.earlier.contains(b.j[c]) |
+               lane.held.contains(b.i[c]) | lane.held.contains(b.j[c]))) {
             b.skip |= 1u << c;
             lane.deferred.push_back(lane.offset + static_cast<std::uint32_t>(q));
             lane.held.insert(b.i[c]);
             lane.held.insert(b.j[c]);
-            continue;
           }
         }
         __builtin_prefetch(v + std::size_t(b.i[c]) * stride, 1);
@@ -560,8 +565,7 @@ class Engine {
       lane.earlier.reserve(2 * std::size_t(lo));
       for (std::uint32_t c = 0; c < lo; ++c) {
         std::uint32_t i, j;
-        double u;
-        draw(K0 + start + c, i, j, u);
+        draw_pair(K0 + start + c, i, j);
         lane.earlier.insert(i);
         lane.earlier.insert(j);
       }

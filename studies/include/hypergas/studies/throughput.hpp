@@ -7,11 +7,12 @@
 // the bytes per particle and the ratio to a memory-bound probe run in the same process:
 // random pair updates (load two records of the same stride, average-and-swap their
 // components, store) over an array of the same size, with the same prefetching as the
-// engine. The engine is sequential (one core); with `threads` > 1 a second line per point
-// reports the aggregate rate of that many independent hard-sphere replicas run concurrently
-// (replicas.hpp), which is how the second core is used without changing statistics. Rates
-// are per wall second; with `cpu_clock`, per CPU second of the thread for paired A/B runs
-// on a shared machine. The JSON says which ("clock").
+// engine. With a list of thread counts each point is timed for every count (alternating
+// within each repeat) and each line adds the speed-up over the first count, the parallel
+// efficiency and probe_gain: the aggregate rate of that many probes run at the same time on
+// separate arrays over the rate of one, the most any parallel schedule could gain on the
+// machine. Rates are per wall second; with `cpu_clock`, per CPU second of the thread for
+// paired A/B runs of one thread on a shared machine. The JSON says which ("clock").
 //
 // EDMD: one case is a dimension, N, packing fraction and neighbour scan:
 //   {"bench":"edmd","queue":"calendar","scan":"horizon","dim":3,"n":32000,"packing":0.26,
@@ -51,7 +52,8 @@ struct DsmcBenchOptions {
 /// `out`. Fields: model, dim, n, reps, collisions_per_s (median accepted collisions per
 /// second), candidates_per_s, acceptance, bytes_per_particle, probe_pair_updates_per_s,
 /// probe_ratio (one core), threads, speedup (against the first thread count, scaled by
-/// it), efficiency (speedup / threads), clock. Throws InvalidInput for an unknown model, a
+/// it), efficiency (speedup / threads), probe_gain (aggregate rate of `threads` probes run
+/// at once over one: the machine's ceiling for the speed-up), clock. Throws InvalidInput for an unknown model, a
 /// dimension outside 1..6 or a thread count outside 1..256.
 void run_dsmc_bench(std::ostream& out, const DsmcBenchOptions& o = {});
 

@@ -302,17 +302,17 @@ class Engine {
   /// rejection); on rejection (probability below range / 2^32) takes fresh words of
   /// candidate K from word 2^20 on, far from those its scattering uses.
   std::uint32_t bounded32(std::uint64_t K, std::uint32_t x, std::uint32_t range) const {
-    std::uint64_t m = std::uint64_t(x) * range;
-    auto l = static_cast<std::uint32_t>(m);
-    if (l < range) [[unlikely]] {
-      const std::uint32_t t = (0u - range) % range;
-      EventStream more(draws_, K, std::uint64_t{1} << 20);
-      while (l < t) {
-        x = static_cast<std::uint32_t>(more() >> 32);
-        m = std::uint64_t(x) * range;
-        l = static_cast<std::uint32_t>(m);
-      }
-    }
+    const std::uint64_t m = std::uint64_t(x) * range;
+    if (static_cast<std::uint32_t>(m) < range) [[unlikely]]
+      return bounded32_slow(K, m, range);
+    return static_cast<std::uint32_t>(m >> 32);
+  }
+  [[gnu::noinline]] std::uint32_t bounded32_slow(std::uint64_t K, std::uint64_t m,
+                                                 std::uint32_t range) const {
+    const std::uint32_t t = (0u - range) % range;
+    EventStream more(draws_, K, std::uint64_t{1} << 20);
+    while (static_cast<std::uint32_t>(m) < t)
+      m = std::uint64_t(static_cast<std::uint32_t>(more() >> 32)) * range;
     return static_cast<std::uint32_t>(m >> 32);
   }
   /// Candidate K: a uniformly chosen ordered pair of distinct particles (word 0) and its

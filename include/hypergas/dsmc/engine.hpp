@@ -40,28 +40,29 @@
 //
 // Random numbers are counter-based (counter_rng.hpp): candidate number K of the run (K = 0,
 // 1, 2, ... over all epochs) draws its pair, its acceptance uniform and its scattering
-// direction from Philox4x32-10 keyed by the seed, with K in the counter. What candidate K
-// draws therefore does not depend on which thread processes it or when; only the Poisson
-// counts and order-statistic times of the epochs come from a sequential stream.
+// direction from SplitMix64 in counter mode keyed by the seed, with K in the counter. What
+// candidate K draws therefore does not depend on which thread processes it or when; only
+// the Poisson counts and order-statistic times of the epochs come from a sequential stream.
 //
-// One thread (set_threads(1)): candidates come in batches of 16. A batch (pairs and
+// The candidate loop (run_lane): candidates come in batches of 16. A batch (pairs and
 // acceptance uniforms) is drawn one batch ahead and its velocities prefetched (random access
 // to N = 1e6 velocities is cache-miss bound); then all 16 are tested at once - no velocity
 // changes in between, so the loads overlap and no branch waits on them - and the accepted
 // ones are taken in order (count-trailing-zeros on the acceptance mask). Exactness is kept
-// by re-testing: after a collision, the later candidates of the batch that share one of its
-// two particles; after a change of the bound G, the whole rest of the batch.
+// by re-testing, after a collision, the later candidates of the batch that share one of its
+// two particles. With one thread this loop is the engine.
 //
-// Several threads (set_threads(T)): candidates are taken in blocks of a few per cent of N.
-// In a block, the candidates that are the first on both their particles are decided and
-// applied by all threads at once; the rest follow in order on one thread
+// Several threads (set_threads(T)): candidates are taken in blocks of N/64 (2048 .. 65536),
+// one contiguous chunk per thread. Each thread runs its chunk through the same loop,
+// deferring the candidates that touch a particle of an earlier chunk or of a candidate it
+// deferred before; thread 0 then takes the deferred ones in block order
 // (dsmc/level_schedule.hpp). A raise of the bound at candidate k* ends the epoch there, as in
-// the sequential process: candidates after k* that were already applied are undone from a
-// copy of their old velocities. The state after every call is bit for bit the state of the
-// one-thread engine, for every T (tests/unit/test_dsmc_parallel.cpp).
+// the sequential process: what later chunks applied after k* is undone from a copy of the
+// old velocities. The state after every call is bit for bit the state of the one-thread
+// engine, for every T (tests/unit/test_dsmc_parallel.cpp).
 //
 // A self-check mode (set_self_check) re-tests every pending candidate before each step of
-// the one-thread loop and, with threads, replays each block sequentially on a copy of the
+// the candidate loop and, with threads, replays each block sequentially on a copy of the
 // velocities; it counts disagreements (tests/unit/test_dsmc_engine.cpp and
 // test_dsmc_parallel.cpp require zero). Hard spheres accept by comparing squares, so a
 // rejected candidate costs no square root; equal-mass scenes compile the mass weights to

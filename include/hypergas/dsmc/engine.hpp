@@ -329,7 +329,7 @@ class Engine {
     j += (j >= i);
   }
   /// Whether pair (i, j) with acceptance uniform u is accepted now with bound G.
-  bool accepts(std::uint32_t i, std::uint32_t j, double u, double G) const {
+  [[gnu::always_inline]] bool accepts(std::uint32_t i, std::uint32_t j, double u, double G) const {
     if constexpr (Model::needs_majorant) {
       const double* v = p_.velocity_data().data();
       double g2 = 0.0;
@@ -344,7 +344,9 @@ class Engine {
     }
   }
   /// Whether candidate c of batch b is accepted with the velocities of now and bound G.
-  bool test(const Batch& b, int c, double G) const { return accepts(b.i[c], b.j[c], b.u[c], G); }
+  [[gnu::always_inline]] bool test(const Batch& b, int c, double G) const {
+    return accepts(b.i[c], b.j[c], b.u[c], G);
+  }
   /// Collides pair (i, j) as candidate K (its scattering words from word 2 of K on);
   /// returns the larger of the two new squared speeds.
   [[gnu::always_inline]] double collide(std::uint32_t i, std::uint32_t j, std::uint64_t K) {

@@ -17,8 +17,9 @@ namespace hypergas::dsmc {
 /// vj into p's velocity array). Single-mass scenes compile the weights to 1/2; in D = 1
 /// with equal masses g' = +-g and the update is done as an exact keep-or-swap.
 template <int D, Features F, class VI, class VJ>
-inline void apply_deflection(const Particles<D, F>& p, std::uint32_t i, std::uint32_t j, VI&& vi,
-                             VJ&& vj, const Vec<D>& dg) {
+[[gnu::always_inline]] inline void apply_deflection(const Particles<D, F>& p, std::uint32_t i,
+                                                std::uint32_t j, VI&& vi,
+                                                VJ&& vj, const Vec<D>& dg) {
   constexpr bool equal_masses = !F.species && !F.masses;
   if constexpr (equal_masses && D == 1) {
     if (dg[0] != 0.0) std::swap(vi[0], vj[0]);

@@ -588,7 +588,7 @@ class Engine {
         lane.saved_at.clear();
         lane.saved_ij.clear();
         lane.saved.clear();
-        lane.held.reserve(std::size_t(hi - lo) / 16);
+        lane.held.reserve(std::size_t(hi - lo) / 8);
         lane.collisions = 0;
         lane.raise_s2 = 0.0;
         lane.raised = false;

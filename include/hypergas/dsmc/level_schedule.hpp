@@ -61,20 +61,14 @@ class ParticleFilter {
   void clear() {
     for (const std::uint32_t s : used_) slots_[s] = 0u;
     used_.clear();
+    keys_.clear();
   }
-  bool empty() const { return used_.empty(); }
+  bool empty() const { return keys_.empty(); }
   void insert(std::uint32_t p) {
-    if (used_.size() >= grow_at_) [[unlikely]]
+    if (keys_.size() >= grow_at_) [[unlikely]]
       regrow();
-    const std::size_t s = home(p);
-    const std::uint32_t key = p + 1;  // 0: empty
-    const std::uint32_t old = slots_[s];
-    if (old == 0) {
-      slots_[s] = key;
-      used_.push_back(static_cast<std::uint32_t>(s));
-    } else if (old != key) {
-      slots_[s] = shared;
-    }
+    keys_.push_back(p);
+    place(p);
   }
   /// True if p was inserted (and, rarely, if it was not).
   bool contains(std::uint32_t p) const {
@@ -87,26 +81,29 @@ class ParticleFilter {
   std::size_t home(std::uint32_t p) const {
     return static_cast<std::size_t>((std::uint64_t(p) * 0x9e3779b97f4a7c15ULL) >> shift_);
   }
-  void regrow() {  // more insertions than reserved: a table twice as large, filled again
-    std::vector<std::uint32_t> keys;
-    for (const std::uint32_t s : used_)
-      if (slots_[s] != shared) keys.push_back(slots_[s] - 1);
-    const bool lost = keys.size() < used_.size();
-    const std::size_t n = used_.size();
-    clear();
-    slots_.assign(2 * slots_.size(), 0u);
-    --shift_;
-    grow_at_ = slots_.size() / 8;
-    for (const std::uint32_t p : keys) insert(p);
-    if (lost) {  // particles behind a shared mark are unknown: mark every slot as shared
-      std::fill(slots_.begin(), slots_.end(), shared);
-      used_.resize(slots_.size());
-      for (std::size_t s = 0; s < slots_.size(); ++s) used_[s] = static_cast<std::uint32_t>(s);
-      grow_at_ = std::max(grow_at_, 2 * n + used_.size());
+  void place(std::uint32_t p) {
+    const std::size_t s = home(p);
+    const std::uint32_t key = p + 1;  // 0: empty
+    const std::uint32_t old = slots_[s];
+    if (old == 0) {
+      slots_[s] = key;
+      used_.push_back(static_cast<std::uint32_t>(s));
+    } else if (old != key) {
+      slots_[s] = shared;
     }
+  }
+  void regrow() {  // more insertions than reserved: a table twice as large, filled again
+    for (const std::uint32_t s : used_) slots_[s] = 0u;
+    used_.clear();
+    slots_.assign(std::max<std::size_t>(1024, 2 * slots_.size()), 0u);
+    shift_ = 64;
+    for (std::size_t c = slots_.size(); c > 1; c /= 2) --shift_;
+    grow_at_ = slots_.size() / 8;
+    for (const std::uint32_t p : keys_) place(p);
   }
   std::vector<std::uint32_t> slots_;
   std::vector<std::uint32_t> used_;  // slots written since the last clear
+  std::vector<std::uint32_t> keys_;  // particles inserted since the last clear
   std::size_t grow_at_ = 0;
   int shift_ = 54;
 };

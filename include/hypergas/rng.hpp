@@ -104,39 +104,4 @@ class Rng {
   bool has_spare_ = false;
 };
 
-/// xoshiro256++ (Blackman & Vigna, "Scrambled linear pseudorandom number generators", ACM
-/// TOMS 47:4, 2021): 256 bits of state, period 2^256 - 1, about a dozen instructions per
-/// 64-bit word. For hot loops that need plain words in bulk (the DSMC candidate pairs) and
-/// keep the state in registers; Rng (PCG64, a 128-bit multiply per word) stays the general
-/// stream. Seeded from an Rng through SplitMix64 (never all zero): reproducible.
-class FastRng {
- public:
-  using result_type = std::uint64_t;
-  explicit FastRng(Rng& seeder) {
-    for (auto& x : s_) x = detail::mix64(seeder());
-    if ((s_[0] | s_[1] | s_[2] | s_[3]) == 0) s_[0] = 1;
-  }
-  static constexpr result_type min() { return 0; }
-  static constexpr result_type max() { return std::numeric_limits<result_type>::max(); }
-  result_type operator()() {
-    const std::uint64_t r = rotl(s_[0] + s_[3], 23) + s_[0];
-    const std::uint64_t t = s_[1] << 17;
-    s_[2] ^= s_[0];
-    s_[3] ^= s_[1];
-    s_[1] ^= s_[2];
-    s_[0] ^= s_[3];
-    s_[2] ^= t;
-    s_[3] = rotl(s_[3], 45);
-    return r;
-  }
-  /// Uniform double in [0, 1), 53 random bits.
-  double uniform() { return detail::unit_interval((*this)()); }
-  /// Uniform double in (0, 1]: safe for log().
-  double uniform_pos() { return detail::unit_interval_pos((*this)()); }
-
- private:
-  static constexpr std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
-  std::uint64_t s_[4];
-};
-
 }  // namespace hypergas

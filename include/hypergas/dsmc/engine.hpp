@@ -247,12 +247,11 @@ class Engine {
     block_ = parallel ? (block > 0 ? block : auto_block) : 0;
     if (!parallel) {
       team_.reset();
-      par_.reset();
+      lanes_.clear();
       return;
     }
     if (!team_ || team_->size() != threads) team_ = std::make_unique<ThreadTeam>(threads);
-    par_ = std::make_unique<Parallel>();
-    par_->lane.resize(static_cast<std::size_t>(threads));
+    lanes_.assign(static_cast<std::size_t>(threads), Lane{});
   }
   /// Threads that process one candidate block together (1: the one-thread loop).
   int threads() const { return team_ ? team_->size() : 1; }
@@ -409,7 +408,7 @@ class Engine {
   /// maximum squared speed). NTC: never stops; records the largest such speed.
   template <bool Exact>
   std::uint64_t process(std::uint64_t m) {
-    const std::uint64_t k = par_ && m >= 4u * block_ ? process_parallel<Exact>(m)
+    const std::uint64_t k = team_ && m >= 4u * block_ ? process_parallel<Exact>(m)
                                                      : process_serial<Exact>(m);
     candidates_ += k;
     return k;
@@ -543,7 +542,6 @@ class Engine {
   ///     there; meanwhile every thread draws its chunk of block b + 1 and fills its set.
   template <bool Exact>
   std::uint64_t process_parallel(std::uint64_t m) {
-    Parallel& P = *par_;
     ThreadTeam& team = *team_;
     const int T = team.size();
     const double G = bound_.bound();
@@ -563,7 +561,7 @@ class Engine {
     // thread t's set: the particles of the chunks before its own (drawn again here, so that
     // the set is written and read by one core only)
     const auto prepare = [&](std::uint64_t start, std::uint32_t nb, int t) {
-      Lane& lane = P.lane[std::size_t(t)];
+      Lane& lane = lanes_[std::size_t(t)];
       const std::uint32_t lo = share(nb, t).first;
       lane.earlier.reserve(2 * std::size_t(lo));
       for (std::uint32_t c = 0; c < lo; ++c) {
@@ -575,7 +573,7 @@ class Engine {
     };
 
     team.run([&](int t) {
-      Lane& lane = P.lane[std::size_t(t)];
+      Lane& lane = lanes_[std::size_t(t)];
       std::uint64_t start = 0;
       std::uint32_t nb = block_after(0);
       prepare(0, nb, t);
@@ -627,17 +625,17 @@ class Engine {
   /// the raising one); `raised` tells whether the epoch ends there.
   template <bool Exact>
   std::uint32_t finish_block(std::uint64_t base, std::uint32_t nb, double G, bool& raised) {
-    Parallel& P = *par_;
+    raised = false;
     std::uint32_t stop_at = nb;  // block position of the first raise
     double stop_s2 = 0.0, ntc_raise = 0.0;
     std::uint64_t coll = 0;
-    for (const Lane& w : P.lane) {
+    for (const Lane& w : lanes_) {
       if (w.raise_at < stop_at) stop_at = static_cast<std::uint32_t>(w.raise_at), stop_s2 = w.raise_s2;
       coll += w.collisions;
       ntc_raise = std::max(ntc_raise, w.raise_s2);
     }
     bool end = false;
-    for (const Lane& w : P.lane) {
+    for (const Lane& w : lanes_) {
       for (const std::uint32_t c : w.deferred) {
         if (c >= stop_at) {
           end = true;
@@ -668,7 +666,7 @@ class Engine {
         // undo, newest first, what chunks after the raise applied (their particles are
         // touched by no other chunk and by no applied deferred candidate)
         double* v = p_.velocity_data().data();
-        for (const Lane& w : P.lane)
+        for (const Lane& w : lanes_)
           for (std::size_t a = w.saved_at.size(); a-- > 0;) {
             if (w.saved_at[a] <= stop_at) break;
             const std::uint32_t i = w.saved_ij[2 * a], j = w.saved_ij[2 * a + 1];
@@ -680,15 +678,13 @@ class Engine {
             --coll;
           }
         raise_to_ = std::max(raise_to_, stop_s2);
-        collisions_ += coll;
         raised = true;
-        return stop_at + 1;
       }
     } else if constexpr (Model::needs_majorant) {
       raise_to_ = std::max(raise_to_, ntc_raise);
     }
     collisions_ += coll;
-    return nb;
+    return raised ? stop_at + 1 : nb;
   }
   /// Self-check: the velocity components into / out of a flat copy.
   void save_velocities(std::vector<double>& to) const {
@@ -806,13 +802,11 @@ class Engine {
   std::uint64_t check_failures_ = 0;
   std::array<double, max_species> species_w_{};
 
-  // The thread team and its lanes (not state: rebuilt by set_threads).
-  struct Parallel {
-    std::vector<Lane> lane;  // per thread
-  };
+  // The thread team and one lane per thread (not state: rebuilt by set_threads; no team:
+  // the one-thread loop).
   std::uint32_t block_ = 0;
   std::unique_ptr<ThreadTeam> team_;
-  std::unique_ptr<Parallel> par_;
+  std::vector<Lane> lanes_;
 };
 
 }  // namespace hypergas::dsmc

@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # Sets up hypergas from nothing on Debian 12: installs the Debian packages it needs (only
 # those missing; non-interactive; as root or through sudo), then configures and builds a
-# Release build in ./build: only the `hypergas` command (what the default scene needs), or
-# with --all everything (tests, examples, benchmarks). Idempotent: a second run installs
+# Release build in ./build: the `hypergas` command (what the default scene needs) and the
+# Python module (build/python/hypergas), or with --all everything (tests, examples,
+# benchmarks). Idempotent: a second run installs
 # nothing and rebuilds only what changed. Other arguments are passed to the CMake
 # configure step.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-targets=(--target hypergas_cli)
+targets=(--target hypergas_cli)  # + hypergas_python when configured (below)
 args=()
 for a in "$@"; do
   if [ "$a" = "--all" ]; then targets=(); else args+=("$a"); fi
@@ -22,6 +23,8 @@ packages=(
   catch2                                 # tests
   libcli11-dev libfmt-dev                # the command: options and output
   gnuplot-nox                            # PNG plots
+  python3-dev pybind11-dev python3-numpy # the Python module
+  python3-matplotlib python3-pytest python3-tqdm  # its example, tests and progress bar
 )
 
 missing=()
@@ -42,4 +45,7 @@ fi
 
 jobs=$(nproc 2>/dev/null || echo 2)
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release ${args[@]+"${args[@]}"} >&2
+if ((${#targets[@]})) && cmake --build build --target help | grep hypergas_python >/dev/null; then
+  targets+=(hypergas_python)
+fi
 cmake --build build -j "$jobs" ${targets[@]+"${targets[@]}"} >&2

@@ -340,6 +340,36 @@ void validate(const RunOptions& o) {
   check_memory(o.n, o.dim, edmd);
 }
 
+namespace {
+/// What both engine configurations take from the options alike.
+template <class Config>
+Config common_config(const RunOptions& o) {
+  Config cfg;
+  cfg.n = static_cast<std::size_t>(o.n);
+  cfg.seed = o.seed;
+  cfg.init = o.initial_state();
+  cfg.initial.fraction = o.fraction;
+  cfg.initial.mass_ratio = o.mass_ratio;
+  return cfg;
+}
+}  // namespace
+
+dsmc::Config dsmc_config(const RunOptions& o) {
+  auto cfg = common_config<dsmc::Config>(o);
+  cfg.vhs_exponent = o.vhs_exponent;
+  cfg.initial.kT = o.temperature;
+  return cfg;
+}
+
+edmd::Config edmd_config(const RunOptions& o) {
+  auto cfg = common_config<edmd::Config>(o);
+  cfg.packing = o.packing;
+  cfg.initial.kT = 1.0;  // EDMD units: kT = 1
+  return cfg;
+}
+
+bool two_species(const RunOptions& o) { return o.mass_ratio != 1.0; }
+
 void validate(const BenchOptions& o) {
   if (o.engine != "all") check_name("--engine (or all)", o.engine, registry::engine);
   if (o.dims.empty()) bad("--dim needs at least one dimension");

@@ -11,6 +11,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "hypergas/dsmc/config.hpp"
+#include "hypergas/edmd/config.hpp"
 #include "hypergas/registry.hpp"
 
 namespace hypergas::cli {
@@ -62,6 +64,13 @@ struct BenchOptions {
   std::vector<int> threads{1};              ///< DSMC: thread counts to time, each 1..64
   std::uint64_t seed = 1;
 };
+
+/// The engine configurations a run's (validated) options describe: the command and the
+/// Python module build their engines from these.
+dsmc::Config dsmc_config(const RunOptions& o);
+edmd::Config edmd_config(const RunOptions& o);
+/// Whether the run has two species (--mass-ratio != 1): the engines' Features::species.
+bool two_species(const RunOptions& o);
 
 /// Registers the `run` options on `app`, writing into `o`.
 void add_run_options(CLI::App& app, RunOptions& o);

@@ -166,15 +166,8 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
 }  // namespace
 
 RunRecord simulate_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
-  dsmc::Config cfg;
-  cfg.n = static_cast<std::size_t>(o.n);
-  cfg.vhs_exponent = o.vhs_exponent;
-  cfg.seed = o.seed;
-  cfg.init = o.initial_state();
-  cfg.initial.kT = o.temperature;
-  cfg.initial.fraction = o.fraction;
-  cfg.initial.mass_ratio = o.mass_ratio;
-  const bool species = o.mass_ratio != 1.0;
+  const dsmc::Config cfg = dsmc_config(o);
+  const bool species = two_species(o);
   if (o.dim == 1 && !species)
     fmt::print(stderr,
                "hypergas: note: in D = 1 equal masses only swap velocities, so the gas never "

@@ -92,15 +92,8 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress, RunCo
 }  // namespace
 
 RunRecord simulate_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
-  edmd::Config cfg;
-  cfg.n = static_cast<std::size_t>(o.n);
-  cfg.packing = o.packing;
-  cfg.seed = o.seed;
-  cfg.init = o.initial_state();
-  cfg.initial.kT = 1.0;
-  cfg.initial.fraction = o.fraction;
-  cfg.initial.mass_ratio = o.mass_ratio;
-  const bool species = o.mass_ratio != 1.0;
+  const edmd::Config cfg = edmd_config(o);
+  const bool species = two_species(o);
   return registry::dispatch(
       [&](auto dim, auto sp) {
         return run<decltype(dim)::type::value, decltype(sp)::type::value>(o, cfg, progress, ctx);

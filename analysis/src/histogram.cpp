@@ -135,16 +135,20 @@ Histogram make_histogram(const std::vector<double>& xs, const MaxwellReference& 
   return h;
 }
 
+double bin_density(const MaxwellReference& ref, double lo, double hi) {
+  // Exact bin probability over the width; the upper tails keep it accurate far out.
+  const double p =
+      ref.cdf(lo) < 0.5 ? ref.cdf(hi) - ref.cdf(lo) : ref.upper_tail(lo) - ref.upper_tail(hi);
+  return p / (hi - lo);
+}
+
 void write_histogram_csv(const std::string& path, const Histogram& h, const MaxwellReference& ref) {
   ref.validate();
   std::vector<std::vector<double>> rows;
   rows.reserve(h.bins());
   for (std::size_t i = 0; i < h.bins(); ++i) {
     const double lo = h.lower(i), hi = h.upper(i);
-    // Exact bin probability over the width: the reference density averaged over the bin.
-    const double p =
-        ref.cdf(lo) < 0.5 ? ref.cdf(hi) - ref.cdf(lo) : ref.upper_tail(lo) - ref.upper_tail(hi);
-    rows.push_back({lo, hi, h.count(i), h.density(i), p / (hi - lo)});
+    rows.push_back({lo, hi, h.count(i), h.density(i), bin_density(ref, lo, hi)});
   }
   write_csv(path, {"lo", "hi", "count", "density", "maxwell_density"}, rows);
 }

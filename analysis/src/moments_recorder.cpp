@@ -141,11 +141,24 @@ void MomentsRecorder::write_moments_csv(const std::string& path) const {
   write_csv(path, columns_, rows_);
 }
 
-void MomentsRecorder::write_speed_histogram_csv(const std::string& path, int species) const {
-  if (last_histograms_.empty()) throw InvalidInput("MomentsRecorder: nothing observed, no " + path);
+std::size_t MomentsRecorder::histogram_index(int species, const std::string& what) const {
+  if (last_histograms_.empty()) throw InvalidInput("MomentsRecorder: nothing observed, no " + what);
   const auto k = static_cast<std::size_t>(species + 1);
   if (species < -1 || k >= last_histograms_.size())
-    throw InvalidInput("MomentsRecorder: no species " + std::to_string(species) + " for " + path);
+    throw InvalidInput("MomentsRecorder: no species " + std::to_string(species) + " for " + what);
+  return k;
+}
+
+const Histogram& MomentsRecorder::last_histogram(int species) const {
+  return last_histograms_[histogram_index(species, "speed histogram")];
+}
+
+const MaxwellReference& MomentsRecorder::last_reference(int species) const {
+  return last_refs_[histogram_index(species, "speed histogram")];
+}
+
+void MomentsRecorder::write_speed_histogram_csv(const std::string& path, int species) const {
+  const std::size_t k = histogram_index(species, path);
   write_histogram_csv(path, last_histograms_[k], last_refs_[k]);
 }
 

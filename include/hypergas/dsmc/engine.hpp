@@ -76,6 +76,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -253,6 +254,11 @@ class Engine {
     if (!team_ || team_->size() != threads) team_ = std::make_unique<ThreadTeam>(threads);
     lanes_.assign(static_cast<std::size_t>(threads), Lane{});
   }
+  /// Sets a function called between epochs (exact scheme: every ~2N candidates and at each
+  /// bound raise) and between NTC steps, with the engine consistent at time(); it may throw
+  /// to stop a run early (run_until then leaves the gas at time() < t, ready to go on).
+  /// Calling it changes nothing in the trajectory. Empty: no calls. Not state.
+  void set_poll(std::function<void()> poll) { poll_ = std::move(poll); }
   /// Threads that process one candidate block together (1: the one-thread loop).
   int threads() const { return team_ ? team_->size() : 1; }
   /// Current majorant bound G >= |g| (velocity units).
@@ -764,6 +770,7 @@ class Engine {
         raise_to_ = 0.0;
         set_lambda();
       }
+      if (poll_) poll_();
     }
   }
 
@@ -782,6 +789,7 @@ class Engine {
         set_lambda();
       }
       time_ = last ? t_end : time_ + h;
+      if (poll_) poll_();
     }
   }
 
@@ -807,6 +815,7 @@ class Engine {
   std::uint32_t block_ = 0;
   std::unique_ptr<ThreadTeam> team_;
   std::vector<Lane> lanes_;
+  std::function<void()> poll_;  // set_poll (not state)
 };
 
 }  // namespace hypergas::dsmc

@@ -226,6 +226,16 @@ class Engine {
   /// snapshots (run_until's observer) always use the original numbering.
   const Store& particles() const { return s_.p; }
   std::size_t original_id(std::size_t i) const { return s_.id[i]; }
+  /// original_id of every memory slot (the array the engine keeps; valid until it is
+  /// destroyed, its contents change when the engine renumbers).
+  const std::vector<std::uint32_t>& original_ids() const { return s_.id; }
+  /// Brings every particle's record to time(): afterwards particles().position(i) is where
+  /// particle i is now (in the box, up to round-off) and its local clock is time(). Events
+  /// and cells are unchanged; later pair times are computed from the moved records, so the
+  /// trajectory equals one without the call up to round-off, not bit for bit.
+  void synchronize() {
+    for (std::uint32_t i = 0; i < size(); ++i) s_.advance(i);
+  }
   /// Unwrapped position of particle a (original numbering) at the current time (length).
   Vec<D> unwrapped_position(std::size_t a) const {
     const std::size_t i = s_.slot[a];

@@ -83,6 +83,10 @@ Histogram make_histogram(const MaxwellReference& ref, std::size_t bins = 50);
 Histogram make_histogram(const std::vector<double>& xs, const MaxwellReference& ref,
                          std::size_t bins = 50);
 
+/// The reference's mean density over [lo, hi) (1 / units of x): the bin's exact
+/// probability over its width.
+double bin_density(const MaxwellReference& ref, double lo, double hi);
+
 /// Writes `h` as CSV `lo,hi,count,density,maxwell_density` (atomically): bin edges (units
 /// of x), counts, the histogram density and the reference's mean density over each bin
 /// (both 1 / units of x).

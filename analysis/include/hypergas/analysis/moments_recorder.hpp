@@ -93,6 +93,12 @@ class MomentsRecorder final : public Observer {
   /// particles (species = -1, mass-weighted) or of one species (mixtures).
   void write_speed_histogram_csv(const std::string& path, int species = -1) const;
 
+  /// The last snapshot's speed histogram and its Maxwell-Boltzmann reference (what
+  /// write_speed_histogram_csv writes) of all particles (species = -1) or of one species.
+  /// Throws InvalidInput if nothing was observed or there is no such species.
+  const Histogram& last_histogram(int species = -1) const;
+  const MaxwellReference& last_reference(int species = -1) const;
+
   /// Saves or restores every data member through a checkpoint archive
   /// (hypergas/checkpoint.hpp): a restored recorder continues exactly as the saved one
   /// would, KS subsamples included. The saved bins and KS cap and seed replace the
@@ -109,6 +115,8 @@ class MomentsRecorder final : public Observer {
   static_assert(std::is_trivially_copyable_v<MaxwellReference>);
 
   void check_restored() const;
+  /// Index into last_histograms_ of `species`; throws InvalidInput naming `what`.
+  std::size_t histogram_index(int species, const std::string& what) const;
 
   std::size_t bins_;
   std::size_t ks_cap_;

@@ -1,0 +1,178 @@
+"""Analysis from Python: the command's statistics on an engine or on any velocity array."""
+
+import dataclasses
+
+import numpy as np
+
+from . import _hypergas
+
+MomentsRecorder = _hypergas.MomentsRecorder
+MomentsRecorder.__doc__ = """Records one row of the command's moments.csv per observation.
+
+MomentsRecorder(bins=50, ks_sample=1_000_000, ks_seed=...): speed histograms of ``bins``
+bins; the KS test on at most ``ks_sample`` speeds (a reproducible uniform subsample above
+that, drawn from its own stream seeded by ``ks_seed``). Feed it with
+``engine.run(..., observers=[rec])``, ``engine.observe(rec)`` or
+``rec.observe_array(velocities, masses=None, time=0.0)``. ``columns`` names the columns,
+``rows`` is a (observations, columns) array, ``column(name)`` one column, ``table()`` a
+dict of columns, ``histogram()`` the last speed histogram (a dict; see SpeedHistogram).
+"""
+
+
+def _table(self):
+    """The recorded rows as {column name: numpy array}."""
+    rows = self.rows
+    return {c: rows[:, k].copy() for k, c in enumerate(self.columns)}
+
+
+MomentsRecorder.table = _table
+
+VacfRecorder = _hypergas.VacfRecorder
+VacfRecorder.__doc__ = """Velocity autocorrelation and mean squared displacement of a run.
+
+VacfRecorder(max_particles=1000) follows the first max_particles particles (original
+numbering) through observations at equal spacing (``engine.run(until, every=dt,
+observers=[rec])``) with multiple-tau correlators: memory independent of the run's length.
+``lags()`` (frames), ``vacf()`` (velocity^2), ``msd()`` (length^2; EDMD only),
+``green_kubo()`` (self-diffusion coefficient, length^2/time), ``dt``, ``frames``.
+"""
+
+
+@dataclasses.dataclass(frozen=True)
+class SpeedHistogram:
+    """Speed histogram against the D-dimensional Maxwell-Boltzmann density at kT.
+
+    lo, hi: bin edges (velocity units); count: particles per bin; density: count / (n
+    width) (1/velocity); maxwell_density: the MB density averaged over each bin; kT:
+    the reference temperature (the sample's own, 2 E_kin / (D n)); mass: the reference
+    mass (mixtures: speeds are mass-weighted to the mean mass).
+    """
+    lo: np.ndarray
+    hi: np.ndarray
+    count: np.ndarray
+    density: np.ndarray
+    maxwell_density: np.ndarray
+    kT: float
+    mass: float
+    dim: int
+    underflow: float
+    overflow: float
+
+    @property
+    def centres(self):
+        return 0.5 * (self.lo + self.hi)
+
+
+@dataclasses.dataclass(frozen=True)
+class Analysis:
+    """One row of moments.csv (the same numbers, the same code) and its speed histogram.
+
+    m2, m4, m6: <|v|^2>, <|v|^4>, <|v|^6>; kurtosis_x: <w_x^4>/<w_x^2>^2 (MB: 3);
+    m4_ratio: <w^4>/(D(D+2)(kT/m)^2) (MB: 1); each with its standard error (``*_err``).
+    kT: 2 E_kin/(D n). l1_speed, kl_speed: L1 distance and KL divergence (nats) of the
+    speed histogram from MB; ks_p_speed, chi2_p_speed: Kolmogorov-Smirnov and chi-square
+    p-values of the speeds against MB at kT. species_kT: per-species kT (mixtures).
+    """
+    time: float
+    collisions_per_particle: float
+    m2: float
+    m4: float
+    kurtosis_x: float
+    m6: float
+    m2_err: float
+    m4_err: float
+    m6_err: float
+    kurtosis_x_err: float
+    m4_ratio: float
+    m4_ratio_err: float
+    kT: float
+    l1_speed: float
+    kl_speed: float
+    ks_p_speed: float
+    chi2_p_speed: float
+    species_kT: tuple
+    histogram: SpeedHistogram
+
+
+def _histogram(d):
+    return SpeedHistogram(**d)
+
+
+def _analysis(rec):
+    row = dict(zip(rec.columns, rec.rows[-1]))
+    fields = {f.name for f in dataclasses.fields(Analysis)}
+    common = {k: float(v) for k, v in row.items() if k in fields}
+    species = tuple(float(v) for k, v in row.items() if k.startswith("kT_"))
+    return Analysis(**common, species_kT=species, histogram=_histogram(rec.histogram()))
+
+
+def analyse(x, masses=None, bins=50, ks_sample=1_000_000, ks_seed=None):
+    """The command's statistics of one state: an engine, or velocities of shape (n, dim).
+
+    For an engine, the state now (mixtures: its masses); for an array, ``masses`` (length
+    n, default all 1). Returns an Analysis. The KS test uses at most ``ks_sample`` speeds
+    (see MomentsRecorder); everything else uses every particle, in one streaming pass.
+    """
+    args = (bins, ks_sample) if ks_seed is None else (bins, ks_sample, ks_seed)
+    rec = MomentsRecorder(*args)
+    if hasattr(x, "_h"):
+        if masses is not None:
+            raise ValueError("masses apply to arrays; an engine has its own")
+        x._h.observe(rec)
+    else:
+        rec.observe_array(x, masses)
+    return _analysis(rec)
+
+
+def maxwell_pdf(x, dim, kT=1.0, mass=1.0, quantity="speed"):
+    """The D-dimensional Maxwell-Boltzmann density of ``quantity`` ("speed", "component",
+    "energy") at x (any shape), for temperature kT (energy units) and mass."""
+    return _hypergas.maxwell_pdf(x, dim, kT, mass, quantity)
+
+
+def maxwell_cdf(x, dim, kT=1.0, mass=1.0, quantity="speed"):
+    """The cumulative Maxwell-Boltzmann distribution of ``quantity`` at x."""
+    return _hypergas.maxwell_cdf(x, dim, kT, mass, quantity)
+
+
+def vacf(velocities, max_lag=None):
+    """<v(t0) . v(t0 + lag)> for lags 0..max_lag (default frames // 2) from equally spaced
+    frames, shape (frames, n, dim), averaged over particles and time origins (FFT)."""
+    return _hypergas.vacf(velocities, max_lag)
+
+
+def msd(positions, max_lag=None):
+    """<|r(t0 + lag) - r(t0)|^2> for lags 0..max_lag from unwrapped positions of shape
+    (frames, n, dim) (EDMD.unwrapped_positions()), averaged like vacf (FFT)."""
+    return _hypergas.msd(positions, max_lag)
+
+
+@dataclasses.dataclass(frozen=True)
+class Report:
+    """The error-against-run-time study (``hypergas report``): ``points`` (study, engine,
+    dim, param, run_s, error, error_se, replicas), ``slopes`` (log-log slopes of error
+    against run time per curve), ``finite_n`` and ``ntc`` (bias tables), each a dict of
+    numpy arrays; ``ntc_order`` p in |bias| ~ dt^p with its error; ``total_s``."""
+    points: dict
+    slopes: dict
+    finite_n: dict
+    ntc: dict
+    ntc_order: float
+    ntc_order_se: float
+    total_s: float
+
+
+def _columns(rows):
+    if not rows:
+        return {}
+    return {k: np.array([r[k] for r in rows]) for k in rows[0]}
+
+
+def report(quick=True, seed=1, threads=2):
+    """Runs the error-against-run-time study of ``hypergas report`` (quick: about 20 s;
+    full: minutes) and returns a Report. Errors are measured against exact values."""
+    r = _hypergas.report(quick, seed, threads)
+    return Report(points=_columns(r["points"]), slopes=_columns(r["slopes"]),
+                  finite_n=_columns(r["finite_n"]), ntc=_columns(r["ntc"]),
+                  ntc_order=r["ntc_order"], ntc_order_se=r["ntc_order_se"],
+                  total_s=r["total_s"])

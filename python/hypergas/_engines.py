@@ -1,0 +1,305 @@
+"""The engines: DSMC and EDMD, thin Python classes over the compiled handles."""
+
+import math
+
+import numpy as np
+
+from . import _hypergas
+from ._progress import Progress
+
+
+class _Engine:
+    """What both engines share: the run loop, the clock, the velocity view."""
+
+    _kind = ""
+
+    def __init__(self, handle):
+        self._h = handle
+        self._observed_at = None  # engine time of the last observation (none twice)
+
+    # ---- running ------------------------------------------------------------------
+    def run(self, until, every=None, callback=None, observers=(), progress=False):
+        """Advances the gas to time ``until`` and returns the engine.
+
+        With ``observers`` (MomentsRecorder, VacfRecorder) or a ``callback`` (called as
+        ``callback(engine)``), they are called at t0, t0 + every, t0 + 2 every, ... up to
+        ``until``, t0 being the time at the call; ``every`` defaults to (until - t0) / 50
+        then, as in the command. An instant already observed by the previous run is not
+        observed again. The stops are those of ``hypergas run --every``, so a run with the
+        same seed and stops gives the command's trajectory bit for bit (DSMC), or the same
+        trajectory whatever the stops (EDMD).
+
+        The GIL is released while the engine runs. Ctrl-C raises KeyboardInterrupt within
+        about 0.1 s (DSMC: at the end of the current epoch of ~2N candidates) and leaves
+        the engine consistent at the time it reached; ``run`` can then go on from there.
+        ``progress=True`` shows a progress bar (tqdm if installed, else a line on stderr).
+        """
+        until = _time_argument("until", until)
+        t0 = self.time
+        if not until >= t0:
+            raise ValueError(f"until must be >= the engine time {t0:.17g}, got {until!r}")
+        if until > 1e12:
+            raise ValueError(f"until must be at most 1e12, got {until!r}")
+        observers = tuple(observers)
+        for o in observers:
+            if not isinstance(o, _hypergas.Observer):
+                raise TypeError("observers must be MomentsRecorder or VacfRecorder objects, "
+                                f"got {type(o).__name__}")
+        if callback is not None and not callable(callback):
+            raise TypeError(f"callback must be callable, got {type(callback).__name__}")
+        sampling = bool(observers) or callback is not None
+        if every is not None:
+            every = _time_argument("every", every)
+            if not every > 0:
+                raise ValueError(f"every must be a finite interval > 0, got {every!r}")
+            if (until - t0) / every > 1e6:
+                raise ValueError(f"(until - time) / every = {(until - t0) / every:.3g} "
+                                 "samples; at most 1e6")
+        elif sampling:
+            every = (until - t0) / 50 if until > t0 else 1.0
+        bar = Progress(t0, until, f"{self._kind} D={self.dim}") if progress else None
+        poll = bar if bar is not None else None
+        try:
+            if sampling:
+                k = 0
+                while True:
+                    tk = t0 + k * every
+                    if tk > until:
+                        if self._kind == "dsmc" and tk - until <= 1e-9 * every:
+                            tk = until  # the command's rule for the last grid point
+                        else:
+                            break
+                    self._h.advance(tk, poll)
+                    if self._observed_at != self.time:
+                        for o in observers:
+                            self._h.observe(o)
+                        if callback is not None:
+                            callback(self)
+                        self._observed_at = self.time
+                    k += 1
+                    if tk == until:
+                        break
+            self._h.advance(until, poll)
+        finally:
+            if bar is not None:
+                bar.close(self.time)
+        return self
+
+    def observe(self, *observers):
+        """Feeds the current state to each recorder (as run's observers do)."""
+        for o in observers:
+            self._h.observe(o)
+        self._observed_at = self.time
+
+    # ---- state --------------------------------------------------------------------
+    @property
+    def dim(self):
+        """The dimension D."""
+        return self._h.dim
+
+    @property
+    def n(self):
+        """The number of particles."""
+        return self._h.n
+
+    @property
+    def time(self):
+        """Engine time (DSMC: mean collision times; EDMD: sigma sqrt(m/kT))."""
+        return self._h.time
+
+    @property
+    def collisions(self):
+        """Accepted collisions so far."""
+        return self._h.collisions
+
+    @property
+    def velocities(self):
+        """Read-only (n, dim) float64 view of the engine's velocities (no copy).
+
+        Rows are particles in the engine's memory order (see EDMD.ids); the view follows
+        the engine as it runs and keeps it alive. Change velocities by building a new
+        engine: the engines keep bounds and sums that a write would invalidate.
+        """
+        return self._h.velocities
+
+    @property
+    def species(self):
+        """Read-only uint8 view of each particle's species (0, 1), or None (one species)."""
+        return self._h.species
+
+    @property
+    def species_masses(self):
+        """Mass of each species (species 0 has mass 1)."""
+        return self._h.species_masses
+
+    @property
+    def masses(self):
+        """Mass of each particle (a new array; masses are stored per species)."""
+        s = self._h.species
+        if s is None:
+            return np.ones(self.n)
+        return self._h.species_masses[s]
+
+    @property
+    def kinetic_energy(self):
+        """Sum of m v^2 / 2 (energy units), summed in long double."""
+        return self._h.kinetic_energy
+
+    @property
+    def momentum(self):
+        """Sum of m v (a new array of length dim), summed in long double."""
+        return self._h.momentum
+
+    @property
+    def bytes_per_particle(self):
+        """Bytes of engine state per particle."""
+        return self._h.bytes_per_particle
+
+    def __repr__(self):
+        return (f"<hypergas.{type(self).__name__} dim={self.dim} n={self.n} "
+                f"time={self.time:.6g} collisions={self.collisions}>")
+
+
+def _time_argument(name, value):
+    if isinstance(value, (bool, str, bytes)) or not isinstance(value, (int, float, np.number)):
+        raise TypeError(f"{name} must be a number, got {type(value).__name__}")
+    v = float(value)
+    if not math.isfinite(v):
+        raise ValueError(f"{name} must be a finite time, got {value!r}")
+    return v
+
+
+class DSMC(_Engine):
+    """The spatially homogeneous hard-sphere gas: the exact Kac/Boltzmann process.
+
+    Keyword arguments are the options of ``hypergas run --engine dsmc`` (defaults alike):
+    ``dim`` (1..6), ``n`` (particles, >= 2), ``model`` ("hs", "maxwell", "vhs"),
+    ``vhs_exponent`` (vhs only), ``init`` (initial state, default "delta"; see
+    ``hypergas.initial_states``), ``mass_ratio`` and ``fraction`` (a two-mass gas),
+    ``temperature`` (initial kT), ``seed`` and ``threads`` (one system on several threads;
+    the result is the same for every count). Python only: ``scheme`` ("exact" or "ntc",
+    Bird's no-time-counter scheme) and ``dt`` (its step).
+
+    Units: time in equilibrium mean collision times; mass of species 0 = 1; velocities in
+    units where the initial kT is ``temperature``.
+    """
+
+    _kind = "dsmc"
+
+    def __init__(self, dim=3, n=10000, *, model=None, init=None, seed=None, threads=None,
+                 vhs_exponent=None, temperature=None, mass_ratio=None, fraction=None,
+                 scheme="exact", dt=0.01):
+        if not isinstance(scheme, str):
+            raise TypeError(f"scheme must be a string, got {type(scheme).__name__}")
+        dt = _time_argument("dt", dt)
+        super().__init__(_hypergas.make_dsmc(
+            scheme=scheme, dt=dt, dim=dim, n=n, model=model, init=init, seed=seed,
+            threads=threads, vhs_exponent=vhs_exponent, temperature=temperature,
+            mass_ratio=mass_ratio, fraction=fraction))
+        self.seed = 1 if seed is None else int(seed)
+        self.scheme = scheme
+
+    @property
+    def model(self):
+        """The collision model's name."""
+        return _hypergas.model(self._h)
+
+    @property
+    def threads(self):
+        """Threads the one system runs on (settable; the trajectory does not change)."""
+        return _hypergas.threads(self._h)
+
+    @threads.setter
+    def threads(self, t):
+        _hypergas.set_threads(self._h, t)
+
+    @property
+    def candidates(self):
+        """Candidate pairs tested so far (collisions / candidates: the acceptance)."""
+        return _hypergas.candidates(self._h)
+
+    @property
+    def temperature(self):
+        """Kinetic temperature 2 E_kin / (D n), energy units."""
+        return 2.0 * self.kinetic_energy / (self.dim * self.n)
+
+
+class EDMD(_Engine):
+    """Event-driven molecular dynamics of hard spheres in a periodic box.
+
+    Keyword arguments are the options of ``hypergas run --engine edmd``: ``dim``, ``n``,
+    ``packing`` (volume fraction, below jamming), ``init`` (default "maxwell"),
+    ``mass_ratio``, ``fraction`` and ``seed``. The particles start on a lattice (compressed
+    when the packing needs it); a dense start takes a while.
+
+    Units: sigma = m = kT = 1; time in sigma sqrt(m/kT); lengths in sigma.
+    The engine renumbers particles by position from time to time (memory locality):
+    ``velocities`` and ``positions`` rows are in memory order, ``ids[i]`` is the original
+    number of row i (``np.argsort(ids)`` orders rows by particle).
+    """
+
+    _kind = "edmd"
+
+    def __init__(self, dim=3, n=10000, *, packing=None, init=None, seed=None,
+                 mass_ratio=None, fraction=None):
+        super().__init__(_hypergas.make_edmd(dim=dim, n=n, packing=packing, init=init,
+                                             seed=seed, mass_ratio=mass_ratio,
+                                             fraction=fraction))
+        self.seed = 1 if seed is None else int(seed)
+
+    @property
+    def positions(self):
+        """Read-only (n, dim) view of the positions in the box [0, L)^dim (no copy).
+
+        Reading it first brings every particle's stored record to the current time (the
+        engine otherwise moves a particle only at its events); the trajectory then goes on
+        the same up to round-off, not bit for bit. Rows in memory order (see ``ids``).
+        """
+        return _hypergas.positions(self._h)
+
+    @property
+    def ids(self):
+        """Read-only uint32 view: the original particle number of each row."""
+        return _hypergas.ids(self._h)
+
+    def unwrapped_positions(self):
+        """Positions without the periodic wrap, in original numbering (a new array)."""
+        return _hypergas.unwrapped_positions(self._h)
+
+    def _observable(self, name):
+        return _hypergas.edmd_observables(self._h)[name]
+
+    @property
+    def box_side(self):
+        """Side L of the periodic box (sigma)."""
+        return self._observable("box_side")
+
+    @property
+    def packing(self):
+        """Packing fraction (volume of the spheres / box volume)."""
+        return self._observable("packing")
+
+    @property
+    def temperature(self):
+        """Kinetic temperature 2 E_kin / (D n) (energy units)."""
+        return self._observable("temperature")
+
+    @property
+    def pressure_Z(self):
+        """Reduced pressure Z = PV/(N kT) from the collision virial since the last
+        reset_observables() (or the start)."""
+        return self._observable("pressure_Z")
+
+    @property
+    def collision_rate(self):
+        """Collisions per particle per unit time since the last reset_observables()."""
+        return self._observable("collision_rate")
+
+    @property
+    def mean_free_time(self):
+        """1 / collision_rate."""
+        return self._observable("mean_free_time")
+
+    def reset_observables(self):
+        """Starts a new measurement window for pressure_Z and the collision rate."""
+        _hypergas.reset_observables(self._h)

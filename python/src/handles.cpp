@@ -1,0 +1,27 @@
+// python/src/handles.cpp -- the engine factories: the dimension picks the per-dimension
+// translation unit (handles_dim.cpp.in), which picks model and features.
+#include "engine_handle.hpp"
+#include "hypergas/dsmc/config.hpp"
+#include "hypergas/registry.hpp"
+
+namespace hypergas::python {
+
+std::unique_ptr<DsmcHandle> make_dsmc(const cli::RunOptions& o, const std::string& scheme,
+                                      double dt) {
+  dsmc::Config cfg = cli::dsmc_config(o);
+  cfg.scheme = registry::scheme(scheme);
+  cfg.dt = dt;
+  dsmc::validate(cfg);
+  return registry::dispatch(
+      [&](auto dim) { return detail::make_dsmc_dim<decltype(dim)::type::value>(o, cfg); },
+      registry::dimension(o.dim));
+}
+
+std::unique_ptr<EdmdHandle> make_edmd(const cli::RunOptions& o) {
+  const edmd::Config cfg = cli::edmd_config(o);
+  return registry::dispatch(
+      [&](auto dim) { return detail::make_edmd_dim<decltype(dim)::type::value>(o, cfg); },
+      registry::dimension(o.dim));
+}
+
+}  // namespace hypergas::python

@@ -9,7 +9,9 @@
 // standard errors, so the p-values are far below 1e-10).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "hypergas/analysis/histogram.hpp"
 #include "hypergas/analysis/sample.hpp"
@@ -145,4 +147,38 @@ TEST_CASE("Kolmogorov tail and chi-square bookkeeping", "[analysis]") {
   CHECK(h.count(1) == 1.0);
   CHECK(h.total() == 3.0);
   CHECK(h.density(1) == Approx(1.0 / 3.0));
+}
+
+// ks_test orders large samples by a counting sort on an interpolated CDF and evaluates the
+// exact CDF only where the maximum can be; its statistic must equal, bit for bit, that of
+// sorting the sample and evaluating the exact CDF at every point (the definition).
+TEST_CASE("ks_test equals the sort-and-evaluate definition bit for bit", "[analysis]") {
+  const auto definition = [](std::vector<double> x, const MaxwellReference& ref) {
+    std::sort(x.begin(), x.end());
+    const double n = static_cast<double>(x.size());
+    double d = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const double f = ref.cdf(x[i]);
+      d = std::max({d, (i + 1) / n - f, f - i / n});
+    }
+    return d;
+  };
+  for (int d : {1, 3, 6}) {
+    test::OwnedState st(d, 50000);
+    Rng rng(21, d);
+    test::fill_maxwell(st, rng, 1.0);
+    const Snapshot s = st.snapshot();
+    for (Quantity q : {Quantity::speed, Quantity::component, Quantity::energy}) {
+      const MaxwellReference ref{q, d, 1.0, 1.0};
+      std::vector<double> x = values(s, q);
+      INFO("D = " << d << ", " << to_string(q));
+      CHECK(ks_test(x, ref).statistic == definition(x, ref));
+      // the wrong temperature: the maximum sits elsewhere, many values share buckets
+      const MaxwellReference hot{q, d, 1.7, 1.0};
+      CHECK(ks_test(x, hot).statistic == definition(x, hot));
+      // a concentrated sample (every value in a few buckets) and repeated values
+      for (double& v : x) v = 1.0 + 1e-3 * std::round(v * 10.0);
+      CHECK(ks_test(x, ref).statistic == definition(x, ref));
+    }
+  }
 }

@@ -89,6 +89,7 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
   const auto body = [&](int r, Engine& engine, DriverState& st, const Conserved<D>& c0,
                         Checkpointer& ck) {
     engine.set_threads(o.threads);
+    recs[r].moments.set_threads(o.threads);
     RunObserver obs({&recs[r].moments}, "dsmc", until, progress && r == 0);
     const auto save = [&](checkpoint::Writer& w) {
       save_run(w, o, st, c0, engine, recs[r].moments);

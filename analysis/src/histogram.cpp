@@ -69,6 +69,14 @@ void Histogram::add(const std::vector<double>& xs) {
   for (double x : xs) add(x);
 }
 
+void Histogram::merge(const Histogram& o) {
+  if (gsl_histogram_equal_bins_p(impl_->h, o.impl_->h) != 1)
+    throw InvalidInput("Histogram::merge: different bins");
+  for (std::size_t i = 0; i < impl_->h->n; ++i) impl_->h->bin[i] += o.impl_->h->bin[i];
+  impl_->under += o.impl_->under;
+  impl_->over += o.impl_->over;
+}
+
 std::size_t Histogram::bins() const {
   return impl_->h->n;
 }

@@ -9,9 +9,10 @@ from . import _hypergas
 MomentsRecorder = _hypergas.MomentsRecorder
 MomentsRecorder.__doc__ = """Records one row of the command's moments.csv per observation.
 
-MomentsRecorder(bins=50, ks_sample=1_000_000, ks_seed=...): speed histograms of ``bins``
-bins; the KS test on at most ``ks_sample`` speeds (a reproducible uniform subsample above
-that, drawn from its own stream seeded by ``ks_seed``). Feed it with
+MomentsRecorder(bins=50, ks_sample=1_000_000, ks_seed=..., threads=1): speed histograms
+of ``bins`` bins; the KS test on at most ``ks_sample`` speeds (a reproducible random
+subsample above that, drawn from its own stream seeded by ``ks_seed``); above ks_sample
+particles the passes run on ``threads`` threads, with the same rows for any count. Feed it with
 ``engine.run(..., observers=[rec])``, ``engine.observe(rec)`` or
 ``rec.observe_array(velocities, masses=None, time=0.0)``. ``columns`` names the columns,
 ``rows`` is a (observations, columns) array, ``column(name)`` one column, ``table()`` a

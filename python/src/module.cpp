@@ -393,18 +393,24 @@ PYBIND11_MODULE(_hypergas, m) {
   py::class_<Observer>(m, "Observer");
   py::class_<analysis::MomentsRecorder, Observer>(m, "MomentsRecorder")
       .def(py::init([](const py::object& bins, const py::object& ks_sample,
-                       const py::object& ks_seed) {
+                       const py::object& ks_seed, const py::object& threads) {
              const long long b = as_integer("bins", bins);
              const long long k = as_integer("ks_sample", ks_sample);
              if (b < 1 || b > 100000000)
                throw InvalidInput("bins must be in 1..1e8, got " + std::to_string(b));
              if (k < 1) throw InvalidInput("ks_sample must be >= 1, got " + std::to_string(k));
-             return std::make_unique<analysis::MomentsRecorder>(
+             const long long t = as_integer("threads", threads);
+             if (t < 1 || t > 64) throw InvalidInput("threads must be in 1..64, got " + std::to_string(t));
+             auto r = std::make_unique<analysis::MomentsRecorder>(
                  static_cast<std::size_t>(b), static_cast<std::size_t>(k), as_seed(ks_seed));
+             r->set_threads(static_cast<int>(t));
+             return r;
            }),
            py::arg("bins") = 50,
            py::arg("ks_sample") = analysis::MomentsRecorder::default_ks_cap,
-           py::arg("ks_seed") = analysis::MomentsRecorder::default_ks_seed)
+           py::arg("ks_seed") = analysis::MomentsRecorder::default_ks_seed,
+           py::arg("threads") = 1)
+      .def_property_readonly("threads", &analysis::MomentsRecorder::threads)
       .def_property_readonly("columns", &analysis::MomentsRecorder::columns)
       .def_property_readonly("rows",
                              [](const analysis::MomentsRecorder& r) {

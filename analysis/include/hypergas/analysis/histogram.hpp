@@ -34,6 +34,8 @@ class Histogram {
   void add(double x);
   /// Counts every value of xs.
   void add(const std::vector<double>& xs);
+  /// Adds the counts of `o`, which must have the same bins (throws InvalidInput otherwise).
+  void merge(const Histogram& o);
 
   std::size_t bins() const;
   double lower(std::size_t i) const;  ///< lower edge of bin i (units of x)

@@ -10,6 +10,8 @@
 // read plain or compensated.
 #pragma once
 
+#include <utility>
+
 #include <cstddef>
 
 #include "hypergas/analysis/sample.hpp"
@@ -52,6 +54,14 @@ class MomentSums {
 
   /// Particles added so far.
   std::size_t count() const { return n_; }
+  /// Adds the sums of another set of particles (same dim and m_mean; RunningSum::merge).
+  void merge(const MomentSums& o) {
+    for (auto [a, b] : {std::pair{&s2_, &o.s2_}, {&s4_, &o.s4_}, {&s6_, &o.s6_}, {&s8_, &o.s8_},
+                        {&s12_, &o.s12_}, {&w4_, &o.w4_}, {&w8_, &o.w8_}, {&x2_, &o.x2_},
+                        {&x4_, &o.x4_}, {&x6_, &o.x6_}, {&x8_, &o.x8_}, {&twice_e_, &o.twice_e_}})
+      a->merge(*b);
+    n_ += o.n_;
+  }
 
   /// The moments of the particles added, with sums read `how`. Throws InvalidInput if
   /// fewer than 2 were added.

@@ -25,11 +25,15 @@
 // The KS test needs its sample sorted, so it is the one statistic that keeps values:
 // min(n, ks_cap) doubles.
 //  - n <= ks_cap: all n speeds, as before.
-//  - n > ks_cap: a uniform random subsample of exactly ks_cap particles without replacement
-//    (SequentialSample, statistics.hpp). Snapshot number j (0, 1, ... in order of
-//    observation) draws it from its own stream Rng(ks_seed, ks_stream).split(j), so the
-//    subsample is reproducible, independent of the engine's random numbers and of the
-//    sizes of earlier snapshots. ks_p_speed is then the p-value of the same null hypothesis
+//  - n > ks_cap: a stratified random subsample of exactly k = ks_cap particles: chunk c
+//    (particles [b, e), 65536 per chunk) gives floor(k e / n) - floor(k b / n) of its
+//    particles, drawn without replacement by Floyd's algorithm. Snapshot number j (0, 1,
+//    ... in order of observation) draws chunk c's share from the stream
+//    Rng(ks_seed, ks_stream).split(j).split(c), so the subsample is reproducible,
+//    independent of the engine's random numbers, of the thread count and of the sizes of
+//    earlier snapshots. Which particles are taken does not depend on their speeds, so
+//    under the null hypothesis the subsample is k independent MB speeds, as a uniform
+//    subsample would be. ks_p_speed is then the p-value of the same null hypothesis
 //    (the speeds are MB at the snapshot's kT) tested with ks_cap samples: under it, it is
 //    uniform as before; its power is that of ks_cap samples, not of n (the smallest
 //    deviation of the speed CDF it resolves is ~1.36 / sqrt(ks_cap), the 5% critical value
@@ -43,10 +47,17 @@
 // left-to-right double sums, which reproduce the files of earlier versions bit for bit;
 // for n > ks_cap they are compensated (sample.hpp), accurate to a few eps for any n. The
 // two differ by the rounding error of the plain sum, ~sqrt(n) eps relative.
+//
+// Threads (set_threads): for n > ks_cap both passes run over the chunks, chunk c on thread
+// c mod T; each chunk keeps its own sums, which are then added in chunk order
+// (RunningSum::merge), and the histograms' integer counts are added per thread. The rows
+// are therefore the same for every T. For n <= ks_cap the passes run on one thread.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -55,6 +66,7 @@
 #include "hypergas/analysis/maxwell.hpp"
 #include "hypergas/observer.hpp"
 #include "hypergas/rng.hpp"
+#include "hypergas/thread_team.hpp"
 
 namespace hypergas::analysis {
 
@@ -72,6 +84,12 @@ class MomentsRecorder final : public Observer {
   /// for bins or ks_cap < 1.
   explicit MomentsRecorder(std::size_t bins = 50, std::size_t ks_cap = default_ks_cap,
                            std::uint64_t ks_seed = default_ks_seed);
+
+  /// Runs the passes over a snapshot above the KS cap on `threads` threads (1..256; the
+  /// rows are the same for every count). Not state: neither a checkpoint nor a copy of the
+  /// recorder keeps it.
+  void set_threads(int threads);
+  int threads() const;
 
   /// Records one row; throws InvalidInput for an unreadable snapshot or one whose number of
   /// species differs from the first (nothing is recorded then).
@@ -115,6 +133,11 @@ class MomentsRecorder final : public Observer {
   static_assert(std::is_trivially_copyable_v<MaxwellReference>);
 
   void check_restored() const;
+  /// Particles per chunk of the passes above the KS cap.
+  static constexpr std::size_t chunk_size = std::size_t{1} << 16;
+  /// f(thread, chunk) for chunks 0..chunks-1, chunk c on thread c mod T; rethrows the
+  /// first exception of a thread.
+  void for_chunks(std::size_t chunks, const std::function<void(int, std::size_t)>& f) const;
   /// Index into last_histograms_ of `species`; throws InvalidInput naming `what`.
   std::size_t histogram_index(int species, const std::string& what) const;
 
@@ -127,6 +150,22 @@ class MomentsRecorder final : public Observer {
   std::vector<Histogram> last_histograms_;  // pooled, then species 0, 1, ... (mixtures)
   std::vector<MaxwellReference> last_refs_;
   int dim_ = 0;
+  /// The thread team of set_threads; a copy of the recorder gets none (one thread), so
+  /// that two recorders never drive one team.
+  struct Team {
+    std::unique_ptr<ThreadTeam> p;
+    Team() = default;
+    Team(const Team&) {}
+    Team& operator=(const Team&) {
+      p.reset();
+      return *this;
+    }
+    Team(Team&&) noexcept = default;
+    Team& operator=(Team&&) noexcept = default;
+    ThreadTeam* operator->() const { return p.get(); }
+    explicit operator bool() const { return p != nullptr; }
+  };
+  Team team_;
 };
 
 }  // namespace hypergas::analysis

@@ -52,6 +52,13 @@ class RunningSum {
     c_ += (s_ - (t - z)) + (x - z);  // exactly (s_ + x) - t, what rounding t lost
     s_ = t;
   }
+  /// Adds another running sum (its plain value with the rounding error of that addition,
+  /// and its own carried error): the compensated value stays accurate to a few eps. The
+  /// plain value is then no longer a left-to-right sum of the terms.
+  void merge(const RunningSum& o) {
+    add(o.s_);
+    c_ += o.c_;
+  }
   double plain() const { return s_; }
   double compensated() const { return s_ + c_; }
   double value(Summation how) const { return how == Summation::plain ? s_ : s_ + c_; }
@@ -95,6 +102,10 @@ class SnapshotTotals {
   /// Reads `s` (validate(s) first). Throws InvalidInput if a particle has a non-finite or
   /// non-positive mass.
   explicit SnapshotTotals(const Snapshot& s);
+  /// The same over particles [begin, end) only.
+  SnapshotTotals(const Snapshot& s, std::size_t begin, std::size_t end);
+  /// Adds the totals of another range of the same snapshot (RunningSum::merge).
+  void merge(const SnapshotTotals& o);
 
   /// Particles of `species` (all for -1; 0 for a species the snapshot does not have).
   std::size_t count(int species = -1) const;

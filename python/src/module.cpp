@@ -22,7 +22,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -44,19 +43,21 @@ namespace {
 /// "--mass-ratio must be ..." -> "mass_ratio must be ...": the command's messages in the
 /// spelling of the Python keyword arguments.
 std::string python_spelling(const std::string& msg) {
-  static const std::regex option("--([a-z][a-z0-9]*(-[a-z0-9]+)*)");
+  const auto lower = [](char c) { return c >= 'a' && c <= 'z'; };
+  const auto word = [&](char c) { return lower(c) || (c >= '0' && c <= '9'); };
   std::string out;
-  auto begin = std::sregex_iterator(msg.begin(), msg.end(), option);
-  std::size_t last = 0;
-  for (auto it = begin; it != std::sregex_iterator(); ++it) {
-    out.append(msg, last, static_cast<std::size_t>(it->position()) - last);
-    std::string name = (*it)[1];
-    for (char& c : name)
-      if (c == '-') c = '_';
-    out += name;
-    last = static_cast<std::size_t>(it->position() + it->length());
+  for (std::size_t i = 0; i < msg.size();) {
+    // "--" followed by a lowercase letter starts an option name: words joined by '-'
+    if (msg.compare(i, 2, "--") == 0 && i + 2 < msg.size() && lower(msg[i + 2])) {
+      std::size_t j = i + 2;
+      while (j < msg.size() && (word(msg[j]) || (msg[j] == '-' && j + 1 < msg.size() &&
+                                                 word(msg[j + 1]))))
+        out += msg[j] == '-' ? '_' : msg[j], ++j;
+      i = j;
+    } else {
+      out += msg[i++];
+    }
   }
-  out.append(msg, last, std::string::npos);
   return out;
 }
 

@@ -2,11 +2,14 @@
 # Where the wall time of a default `hypergas run` goes: engine, per-snapshot analysis and
 # output (CSV and plots), from summary.json, for DSMC 3D hard spheres at N = 1e6 and 1e7
 # (add 1e8 with --large: 3.3 GB of memory and several minutes), default --every (until/50).
-# Usage: bench/analysis_split.sh [--large] [path/to/hypergas]   (default build/sim/hypergas).
+# Usage: bench/analysis_split.sh [--large] [-j T] [path/to/hypergas]
+#        (default build/sim/hypergas; -j T runs engine and analysis on T threads).
 # Needs python3 (Debian python3) to read summary.json.
 set -euo pipefail
 sizes=(1000000 10000000)
 if [ "${1:-}" = "--large" ]; then sizes+=(100000000); shift; fi
+threads=1
+if [ "${1:-}" = "-j" ]; then threads=$2; shift 2; fi
 H=${1:-build/sim/hypergas}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -14,7 +17,7 @@ printf '%-10s %10s %10s %10s %10s %9s %12s %10s\n' n wall_s engine_s analysis_s 
   analysis% "engine c/s" "B/particle"
 for n in "${sizes[@]}"; do
   out=$(mktemp -d -p "$tmp")
-  "$H" run --engine dsmc --dim 3 --n "$n" --until 1 --seed 1 --out "$out" --json | tail -1 |
+  "$H" run --engine dsmc --dim 3 --n "$n" --until 1 --seed 1 --threads "$threads" --out "$out" --json | tail -1 |
     python3 -c '
 import json, sys
 j = json.load(sys.stdin)

@@ -42,7 +42,8 @@ from . import _hypergas
 models = tuple(_hypergas.model_names())
 initial_states = tuple(_hypergas.initial_state_names())
 schemes = tuple(_hypergas.scheme_names())
+jamming_packing = _hypergas.jamming_packing
 
 __all__ = ["DSMC", "EDMD", "Analysis", "Report", "SpeedHistogram", "analyse", "maxwell_pdf",
            "maxwell_cdf", "vacf", "msd", "report", "MomentsRecorder", "VacfRecorder",
-           "models", "initial_states", "schemes"]
+           "models", "initial_states", "schemes", "jamming_packing"]

@@ -31,6 +31,7 @@
 #include "hypergas/analysis/moments_recorder.hpp"
 #include "hypergas/analysis/vacf.hpp"
 #include "hypergas/analysis/vacf_recorder.hpp"
+#include "hypergas/edmd/box.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/registry.hpp"
 #include "hypergas/studies/report.hpp"
@@ -384,6 +385,10 @@ PYBIND11_MODULE(_hypergas, m) {
     for (auto s : registry::initial_state_names()) v.emplace_back(s);
     return v;
   });
+  m.def("jamming_packing", [](int dim) {
+    if (dim < min_dim || dim > max_dim) throw InvalidInput("dim must be in 1..6, got " + std::to_string(dim));
+    return edmd::jamming_packing(dim);
+  }, py::arg("dim"), "The largest EDMD packing accepted in dimension dim (its jamming density).");
   m.def("scheme_names", [] {
     std::vector<std::string> v;
     for (auto s : registry::scheme_names()) v.emplace_back(s);

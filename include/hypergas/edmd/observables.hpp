@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <cstddef>
 #include <cstdint>
 #include <numbers>
@@ -76,5 +77,17 @@ inline double carnahan_starling_Z(double eta) {
 /// Henderson's equation of state for hard disks, Z = (1 + eta^2/8) / (1 - eta)^2
 /// (D. Henderson, Mol. Phys. 30, 971 (1975)); within ~0.2% of simulation for eta <= 0.5.
 inline double henderson_Z(double eta) { return (1.0 + eta * eta / 8.0) / ((1.0 - eta) * (1.0 - eta)); }
+
+/// The equation of state the code holds for dimension D at packing eta: Tonks' exact
+/// 1 / (1 - eta) (1D rods), Henderson (2D), Carnahan–Starling (3D); NaN for D >= 4, where
+/// no closed form of comparable accuracy is included.
+inline double reference_Z(int D, double eta) {
+  switch (D) {
+    case 1: return 1.0 / (1.0 - eta);
+    case 2: return henderson_Z(eta);
+    case 3: return carnahan_starling_Z(eta);
+    default: return std::numeric_limits<double>::quiet_NaN();
+  }
+}
 
 }  // namespace hypergas::edmd

@@ -199,6 +199,28 @@ class DSMC(_Engine):
         self.seed = 1 if seed is None else int(seed)
         self.scheme = scheme
 
+    @classmethod
+    def from_velocities(cls, velocities, *, species=None, mass_ratio=None, model=None,
+                        seed=None, threads=None, vhs_exponent=None, scheme="exact", dt=0.01):
+        """A DSMC gas that starts from the given velocities (copied), shape (n, dim).
+
+        ``species`` (0 or 1 per particle) with ``mass_ratio`` (the mass of species 1; species
+        0 has mass 1) gives a two-mass gas. The total momentum must be zero: the time unit,
+        the equilibrium mean collision time, is defined in the centre-of-mass frame, so
+        subtract the mass-weighted mean velocity first. With the velocities and the seed of
+        another DSMC engine at t = 0, the trajectory is that engine's, bit for bit.
+        """
+        if not isinstance(scheme, str):
+            raise TypeError(f"scheme must be a string, got {type(scheme).__name__}")
+        dt = _time_argument("dt", dt)
+        self = cls.__new__(cls)
+        _Engine.__init__(self, _hypergas.make_dsmc_from(
+            velocities, species, scheme=scheme, dt=dt, model=model, seed=seed,
+            threads=threads, vhs_exponent=vhs_exponent, mass_ratio=mass_ratio))
+        self.seed = 1 if seed is None else int(seed)
+        self.scheme = scheme
+        return self
+
     @property
     def model(self):
         """The collision model's name."""

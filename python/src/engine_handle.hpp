@@ -89,17 +89,27 @@ class EdmdHandle : public EngineHandle {
   virtual void reset_observables() = 0;
 };
 
+/// Given initial velocities for a DSMC engine: n rows of o.dim doubles, contiguous, and
+/// optionally a species index (0 or 1) per particle, species 1 having mass o.mass_ratio.
+struct GivenVelocities {
+  const double* v = nullptr;
+  std::size_t n = 0;
+  const std::uint8_t* species = nullptr;
+};
+
 /// Builds the engine that validated options `o` (engine dsmc) describe, with the time
-/// scheme and NTC step given. Throws InvalidInput for parameters the engine rejects.
+/// scheme and NTC step given; from `given` velocities instead of o's initial state when
+/// set. Throws InvalidInput for parameters the engine rejects.
 std::unique_ptr<DsmcHandle> make_dsmc(const cli::RunOptions& o, const std::string& scheme,
-                                      double dt);
+                                      double dt, const GivenVelocities* given = nullptr);
 /// The same for the EDMD engine (engine edmd).
 std::unique_ptr<EdmdHandle> make_edmd(const cli::RunOptions& o);
 
 namespace detail {
 // Defined in handles.hpp, instantiated once per dimension (handles_dim.cpp.in).
 template <int D>
-std::unique_ptr<DsmcHandle> make_dsmc_dim(const cli::RunOptions& o, const dsmc::Config& cfg);
+std::unique_ptr<DsmcHandle> make_dsmc_dim(const cli::RunOptions& o, const dsmc::Config& cfg,
+                                          const GivenVelocities* given);
 template <int D>
 std::unique_ptr<EdmdHandle> make_edmd_dim(const cli::RunOptions& o, const edmd::Config& cfg);
 }  // namespace detail

@@ -7,13 +7,13 @@
 namespace hypergas::python {
 
 std::unique_ptr<DsmcHandle> make_dsmc(const cli::RunOptions& o, const std::string& scheme,
-                                      double dt) {
+                                      double dt, const GivenVelocities* given) {
   dsmc::Config cfg = cli::dsmc_config(o);
   cfg.scheme = registry::scheme(scheme);
   cfg.dt = dt;
   dsmc::validate(cfg);
   return registry::dispatch(
-      [&](auto dim) { return detail::make_dsmc_dim<decltype(dim)::type::value>(o, cfg); },
+      [&](auto dim) { return detail::make_dsmc_dim<decltype(dim)::type::value>(o, cfg, given); },
       registry::dimension(o.dim));
 }
 

@@ -26,6 +26,8 @@ class Common : public Base {
  public:
   template <class Config>
   explicit Common(const Config& cfg) : e_(cfg) {}
+  template <class Config, class Store>
+  Common(const Config& cfg, Store&& particles) : e_(cfg, std::forward<Store>(particles)) {}
   int dim() const override { return Engine::dim; }
   std::size_t size() const override { return e_.particles().size(); }
   double time() const override { return e_.time(); }
@@ -136,12 +138,30 @@ class Edmd final
   void reset_observables() override { e_.reset_observables(); }
 };
 
+/// Particles holding `given` (velocities, species with species-1 mass `mass_ratio`).
+template <class Store>
+Store given_particles(const GivenVelocities& given, double mass_ratio) {
+  constexpr int D = Store::dim;
+  Store p(given.n);
+  for (std::size_t i = 0; i < given.n; ++i)
+    for (int k = 0; k < D; ++k) p.velocity(i)[k] = given.v[i * D + k];
+  if constexpr (Store::features.species) {
+    p.set_species_mass(1, mass_ratio);
+    for (std::size_t i = 0; i < given.n; ++i) p.set_species(i, given.species ? given.species[i] : 0);
+  }
+  return p;
+}
+
 template <int D>
-std::unique_ptr<DsmcHandle> make_dsmc_dim(const cli::RunOptions& o, const dsmc::Config& cfg) {
+std::unique_ptr<DsmcHandle> make_dsmc_dim(const cli::RunOptions& o, const dsmc::Config& cfg,
+                                          const GivenVelocities* given) {
   return registry::dispatch(
       [&](auto model, auto species) -> std::unique_ptr<DsmcHandle> {
-        return std::make_unique<
-            Dsmc<D, typename decltype(model)::type, decltype(species)::type::value>>(cfg);
+        using Handle =
+            Dsmc<D, typename decltype(model)::type, decltype(species)::type::value>;
+        if (!given) return std::make_unique<Handle>(cfg);
+        using Store = Particles<D, Features{.species = decltype(species)::type::value}>;
+        return std::make_unique<Handle>(cfg, given_particles<Store>(*given, o.mass_ratio));
       },
       registry::model(o.model), registry::species(cli::two_species(o)));
 }

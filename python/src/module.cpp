@@ -533,6 +533,65 @@ PYBIND11_MODULE(_hypergas, m) {
     box->h = std::move(h);
     return box;
   }, py::arg("scheme") = "exact", py::arg("dt") = 0.01);
+  m.def("make_dsmc_from", [](const py::handle& velocities, const py::handle& species,
+                             const std::string& scheme, double dt, const py::kwargs& kw) {
+    auto v = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(velocities);
+    if (!v) type_error("velocities must be an array of numbers, shape (n, dim)");
+    if (v.ndim() != 2)
+      throw InvalidInput("velocities must have shape (n, dim), got " + std::to_string(v.ndim()) +
+                         " dimensions");
+    py::kwargs all = kw;
+    all["n"] = py::int_(v.shape(0));
+    all["dim"] = py::int_(v.shape(1));
+    cli::RunOptions o = run_options(registry::EngineKind::dsmc, all,
+                                    {"n", "dim", "model", "vhs_exponent", "seed", "threads",
+                                     "mass_ratio"});
+    const auto n = static_cast<std::size_t>(v.shape(0));
+    const int dim = static_cast<int>(v.shape(1));
+    const double* x = v.data();
+    for (std::size_t i = 0; i < n * static_cast<std::size_t>(dim); ++i)
+      if (!std::isfinite(x[i]))
+        throw InvalidInput("velocities must be finite (particle " + std::to_string(i / dim) + ")");
+    std::vector<std::uint8_t> sp;
+    if (!species.is_none()) {
+      auto a = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(species);
+      if (!a || a.ndim() != 1 || static_cast<std::size_t>(a.shape(0)) != n)
+        throw InvalidInput("species must be a 1-d array of n = " + std::to_string(n) + " indices");
+      for (std::size_t i = 0; i < n; ++i) {
+        if (a.data()[i] != 0 && a.data()[i] != 1)
+          throw InvalidInput("species must be 0 or 1 (particle " + std::to_string(i) + ")");
+        sp.push_back(static_cast<std::uint8_t>(a.data()[i]));
+      }
+      if (!cli::two_species(o))
+        throw InvalidInput("species needs mass_ratio != 1 (the mass of species 1)");
+    } else if (cli::two_species(o)) {
+      throw InvalidInput("mass_ratio needs species (which particles have that mass)");
+    }
+    // The time unit assumes the centre-of-mass frame (dsmc/time_unit.hpp).
+    std::vector<long double> p(static_cast<std::size_t>(dim), 0.0L);
+    long double mass = 0.0L, mv2 = 0.0L;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double m = sp.empty() || sp[i] == 0 ? 1.0 : o.mass_ratio;
+      mass += m;
+      for (int k = 0; k < dim; ++k) {
+        p[static_cast<std::size_t>(k)] += m * x[i * dim + k];
+        mv2 += m * x[i * dim + k] * x[i * dim + k];
+      }
+    }
+    long double p2 = 0.0L;
+    for (long double pk : p) p2 += pk * pk;
+    if (!(mv2 > 0.0L)) throw InvalidInput("velocities must not all be zero");
+    if (std::sqrt(static_cast<double>(p2)) > 1e-9 * std::sqrt(static_cast<double>(mass * mv2)))
+      throw InvalidInput("the total momentum must be zero (the time unit is defined in the "
+                         "centre-of-mass frame): subtract the mass-weighted mean velocity");
+    const GivenVelocities given{x, n, sp.empty() ? nullptr : sp.data()};
+    auto box = std::make_unique<EngineBox>();
+    auto h = make_dsmc(o, scheme, dt, &given);
+    h->set_threads(o.threads);
+    box->h = std::move(h);
+    return box;
+  }, py::arg("velocities"), py::arg("species") = py::none(), py::arg("scheme") = "exact",
+        py::arg("dt") = 0.01);
   m.def("make_edmd", [](const py::kwargs& kw) {
     const cli::RunOptions o = run_options(registry::EngineKind::edmd, kw, edmd_keywords);
     auto box = std::make_unique<EngineBox>();

@@ -247,3 +247,65 @@ def test_callback_and_observers_at_the_sampling_times():
     g.run(2.0, every=0.5, callback=lambda e: seen.append(e.time), observers=[rec])
     assert seen[5:] == [1.5, 2.0]  # t = 1 was observed already
     np.testing.assert_array_equal(rec.column("time"), seen)
+
+
+# ---- a gas from given velocities -------------------------------------------------------
+def test_from_velocities_continues_an_engine_bit_for_bit():
+    # The velocities and seed of an engine at t = 0 give that engine's trajectory: the
+    # candidates' draws depend only on (seed, candidate number).
+    for kw in ({"dim": 3, "init": "cube"}, {"dim": 5, "model": "vhs", "vhs_exponent": 0.3}):
+        a = hg.DSMC(n=20000, seed=5, **kw)
+        extra = {k: v for k, v in kw.items() if k in ("model", "vhs_exponent")}
+        b = hg.DSMC.from_velocities(a.velocities, seed=5, **extra)
+        assert b.n == a.n and b.dim == a.dim
+        a.run(2.0)
+        b.run(2.0)
+        assert a.collisions == b.collisions
+        np.testing.assert_array_equal(a.velocities, b.velocities)
+
+
+def test_from_velocities_two_species_and_relaxation():
+    rng = np.random.default_rng(8)
+    n = 30000
+    species = (np.arange(n) % 3 == 0).astype(np.uint8)  # a third heavy, mass 5
+    v = rng.uniform(-1.0, 1.0, size=(n, 2))
+    m = np.where(species == 1, 5.0, 1.0)
+    v -= (m[:, None] * v).sum(axis=0) / m.sum()  # centre-of-mass frame
+    g = hg.DSMC.from_velocities(v, species=species, mass_ratio=5.0, seed=2)
+    np.testing.assert_array_equal(g.species, species)
+    np.testing.assert_array_equal(g.masses, m)
+    e0 = g.kinetic_energy
+    assert e0 == pytest.approx(0.5 * np.sum(m[:, None] * v ** 2), rel=1e-12)
+    g.run(15.0)
+    a = hg.analyse(g)
+    # relaxed: both species at one temperature (4 se of each, se ~ kT sqrt(2/(D n_s)))
+    kT = a.kT
+    for s, ns in ((0, 2 * n // 3), (1, n // 3)):
+        assert abs(a.species_kT[s] - kT) < 4 * kT * math.sqrt(2.0 / (2 * ns))
+    assert abs(g.kinetic_energy - e0) <= 1e-12 * e0
+
+
+def test_from_velocities_bad_input():
+    v = np.random.default_rng(1).normal(size=(100, 3))
+    v -= v.mean(axis=0)
+    for bad, message in [
+        (v + 1.0, "total momentum must be zero"),
+        (np.zeros((100, 3)), "must not all be zero"),
+        (np.full((100, 3), np.nan), "finite"),
+        (v[:1], "n must be at least 2"),
+        (np.zeros((10, 7)), "dim must be a dimension in 1..6"),
+        (v[:, 0], "shape (n, dim)"),
+    ]:
+        with pytest.raises(ValueError) as e:
+            hg.DSMC.from_velocities(bad)
+        assert message in str(e.value)
+    with pytest.raises(ValueError, match="species needs mass_ratio"):
+        hg.DSMC.from_velocities(v, species=np.zeros(100))
+    with pytest.raises(ValueError, match="mass_ratio needs species"):
+        hg.DSMC.from_velocities(v, mass_ratio=2.0)
+    with pytest.raises(ValueError, match="species must be 0 or 1"):
+        hg.DSMC.from_velocities(v, species=np.full(100, 2), mass_ratio=2.0)
+    with pytest.raises(TypeError):
+        hg.DSMC.from_velocities(v, init="delta")  # the state is given
+    with pytest.raises(TypeError):
+        hg.DSMC.from_velocities([["a", "b", "c"]] * 3)

@@ -58,7 +58,6 @@ class _Engine:
         elif sampling:
             every = (until - t0) / 50 if until > t0 else 1.0
         bar = Progress(t0, until, f"{self._kind} D={self.dim}") if progress else None
-        poll = bar if bar is not None else None
         try:
             if sampling:
                 k = 0
@@ -69,7 +68,7 @@ class _Engine:
                             tk = until  # the command's rule for the last grid point
                         else:
                             break
-                    self._h.advance(tk, poll)
+                    self._h.advance(tk, bar)
                     if self._observed_at != self.time:
                         for o in observers:
                             self._h.observe(o)
@@ -79,7 +78,7 @@ class _Engine:
                     k += 1
                     if tk == until:
                         break
-            self._h.advance(until, poll)
+            self._h.advance(until, bar)
         finally:
             if bar is not None:
                 bar.close(self.time)

@@ -170,11 +170,28 @@ py::array_t<double> to_numpy(const std::vector<double>& v) {
   return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
 }
 
+/// A Python exception raised inside a poll, carried through the engine as a C++ exception
+/// and restored once the GIL is held again.
+struct PythonStop {};
+
+/// The Python object of an engine and its busy flag: one call at a time may run it.
+struct EngineBox {
+  std::unique_ptr<EngineHandle> h;
+  std::atomic<bool> busy{false};
+  [[noreturn]] static void refuse() {
+    throw std::runtime_error("the engine is running (one call at a time)");
+  }
+  /// Throws RuntimeError while a run is in progress.
+  void idle() const {
+    if (busy) refuse();
+  }
+};
+
 /// Marks an engine busy while a run is in progress (RuntimeError for a second caller).
 class Busy {
  public:
-  explicit Busy(std::atomic<bool>& flag) : flag_(flag) {
-    if (flag_.exchange(true)) throw std::runtime_error("the engine is running (one call at a time)");
+  explicit Busy(EngineBox& box) : flag_(box.busy) {
+    if (flag_.exchange(true)) EngineBox::refuse();
   }
   ~Busy() { flag_ = false; }
   Busy(const Busy&) = delete;
@@ -184,24 +201,28 @@ class Busy {
   std::atomic<bool>& flag_;
 };
 
-/// A Python exception raised inside a poll, carried through the engine as a C++ exception
-/// and restored once the GIL is held again.
-struct PythonStop {};
+/// A new engine box holding a DSMC engine set to run on `threads` threads.
+std::unique_ptr<EngineBox> dsmc_box(std::unique_ptr<DsmcHandle> h, int threads) {
+  h->set_threads(threads);
+  auto box = std::make_unique<EngineBox>();
+  box->h = std::move(h);
+  return box;
+}
 
-/// The Python object of an engine and its busy flag.
-struct EngineBox {
-  std::unique_ptr<EngineHandle> h;
-  std::atomic<bool> busy{false};
-  void idle() const {
-    if (busy) throw std::runtime_error("the engine is running (one call at a time)");
-  }
-};
+/// Throws InvalidInput naming the particle unless rows x 0..cols-1 (`stride` apart) are
+/// finite.
+void check_finite_rows(const double* x, std::size_t rows, int cols, std::size_t stride) {
+  for (std::size_t i = 0; i < rows; ++i)
+    for (int k = 0; k < cols; ++k)
+      if (!std::isfinite(x[i * stride + static_cast<std::size_t>(k)]))
+        throw InvalidInput("velocities must be finite (particle " + std::to_string(i) + ")");
+}
 
 /// Advances box's engine to t with the GIL released (see the file comment). `progress`
 /// (callable or None) is called with the engine time about every 0.1 s.
 void advance(EngineBox& box, double t, const py::object& progress) {
   using Clock = std::chrono::steady_clock;
-  Busy busy(box.busy);
+  Busy busy(box);
   PyObject *type = nullptr, *value = nullptr, *trace = nullptr;
   auto last = Clock::now();
   EngineHandle& h = *box.h;
@@ -265,10 +286,7 @@ ArraySnapshot array_snapshot(const py::handle& velocities, const py::handle& mas
   a.s.stride = static_cast<int>(a.v.strides(0) / static_cast<py::ssize_t>(sizeof(double)));
   a.s.velocities = a.v.data();
   a.s.time = time;
-  for (std::size_t i = 0; i < n; ++i)
-    for (int k = 0; k < dim; ++k)
-      if (!std::isfinite(a.s.velocities[i * a.s.stride + k]))
-        throw InvalidInput("velocities must be finite (particle " + std::to_string(i) + ")");
+  check_finite_rows(a.s.velocities, n, dim, static_cast<std::size_t>(a.s.stride));
   if (!masses.is_none()) {
     auto m = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(masses);
     if (!m || m.ndim() != 1 || static_cast<std::size_t>(m.shape(0)) != n)
@@ -527,11 +545,7 @@ PYBIND11_MODULE(_hypergas, m) {
   };
   m.def("make_dsmc", [](const std::string& scheme, double dt, const py::kwargs& kw) {
     const cli::RunOptions o = run_options(registry::EngineKind::dsmc, kw, dsmc_keywords);
-    auto box = std::make_unique<EngineBox>();
-    auto h = make_dsmc(o, scheme, dt);
-    h->set_threads(o.threads);
-    box->h = std::move(h);
-    return box;
+    return dsmc_box(make_dsmc(o, scheme, dt), o.threads);
   }, py::arg("scheme") = "exact", py::arg("dt") = 0.01);
   m.def("make_dsmc_from", [](const py::handle& velocities, const py::handle& species,
                              const std::string& scheme, double dt, const py::kwargs& kw) {
@@ -549,9 +563,7 @@ PYBIND11_MODULE(_hypergas, m) {
     const auto n = static_cast<std::size_t>(v.shape(0));
     const int dim = static_cast<int>(v.shape(1));
     const double* x = v.data();
-    for (std::size_t i = 0; i < n * static_cast<std::size_t>(dim); ++i)
-      if (!std::isfinite(x[i]))
-        throw InvalidInput("velocities must be finite (particle " + std::to_string(i / dim) + ")");
+    check_finite_rows(x, n, dim, static_cast<std::size_t>(dim));
     std::vector<std::uint8_t> sp;
     if (!species.is_none()) {
       auto a = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(species);
@@ -585,11 +597,7 @@ PYBIND11_MODULE(_hypergas, m) {
       throw InvalidInput("the total momentum must be zero (the time unit is defined in the "
                          "centre-of-mass frame): subtract the mass-weighted mean velocity");
     const GivenVelocities given{x, n, sp.empty() ? nullptr : sp.data()};
-    auto box = std::make_unique<EngineBox>();
-    auto h = make_dsmc(o, scheme, dt, &given);
-    h->set_threads(o.threads);
-    box->h = std::move(h);
-    return box;
+    return dsmc_box(make_dsmc(o, scheme, dt, &given), o.threads);
   }, py::arg("velocities"), py::arg("species") = py::none(), py::arg("scheme") = "exact",
         py::arg("dt") = 0.01);
   m.def("make_edmd", [](const py::kwargs& kw) {
@@ -642,27 +650,32 @@ PYBIND11_MODULE(_hypergas, m) {
   });
 
   // ---- analysis functions
-  for (const char* name : {"maxwell_pdf", "maxwell_cdf"}) {
-    const bool pdf = name[8] == 'p';
-    m.def(name, [pdf](const py::handle& x, int dim, double kT, double mass, const std::string& q) {
+  // MB density and distribution: the same arguments, the member function differs.
+  const auto maxwell = [](double (analysis::MaxwellReference::*f)(double) const) {
+    return [f](const py::handle& x, int dim, double kT, double mass, const std::string& q) {
       const analysis::MaxwellReference ref{quantity(q), dim, kT, mass};
       ref.validate();
-      return elementwise(x, [&](double v) { return pdf ? ref.pdf(v) : ref.cdf(v); });
-    }, py::arg("x"), py::arg("dim"), py::arg("kT") = 1.0, py::arg("mass") = 1.0,
-          py::arg("quantity") = "speed");
-  }
-  m.def("vacf", [](const py::handle& v, const py::object& max_lag) {
-    std::size_t frames = 0, n = 0;
-    int dim = 0;
-    const auto s = series(v, frames, n, dim);
-    return to_numpy(analysis::vacf(s, frames, n, dim, max_lag_of(max_lag, frames)));
-  }, py::arg("velocities"), py::arg("max_lag") = py::none());
-  m.def("msd", [](const py::handle& x, const py::object& max_lag) {
-    std::size_t frames = 0, n = 0;
-    int dim = 0;
-    const auto s = series(x, frames, n, dim);
-    return to_numpy(analysis::msd(s, frames, n, dim, max_lag_of(max_lag, frames)));
-  }, py::arg("positions"), py::arg("max_lag") = py::none());
+      return elementwise(x, [&](double v) { return (ref.*f)(v); });
+    };
+  };
+  for (auto [name, f] : {std::pair{"maxwell_pdf", &analysis::MaxwellReference::pdf},
+                         std::pair{"maxwell_cdf", &analysis::MaxwellReference::cdf}})
+    m.def(name, maxwell(f), py::arg("x"), py::arg("dim"), py::arg("kT") = 1.0,
+          py::arg("mass") = 1.0, py::arg("quantity") = "speed");
+  // VACF and MSD: a (frames, n, dim) series in, one correlation out.
+  const auto correlation = [](std::vector<double> (*f)(const std::vector<double>&, std::size_t,
+                                                       std::size_t, int, std::size_t)) {
+    return [f](const py::handle& x, const py::object& max_lag) {
+      std::size_t frames = 0, n = 0;
+      int dim = 0;
+      const auto s = series(x, frames, n, dim);
+      return to_numpy(f(s, frames, n, dim, max_lag_of(max_lag, frames)));
+    };
+  };
+  m.def("vacf", correlation(&analysis::vacf), py::arg("velocities"),
+        py::arg("max_lag") = py::none());
+  m.def("msd", correlation(&analysis::msd), py::arg("positions"),
+        py::arg("max_lag") = py::none());
 
   // ---- the error-against-run-time study (studies/report.hpp)
   m.def("report", [](bool quick, const py::object& seed, const py::object& threads) {

@@ -9,7 +9,7 @@ import subprocess
 import pytest
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="module")
 def cli():
     """Path of the `hypergas` command (ctest sets HYPERGAS_CLI)."""
     path = os.environ.get("HYPERGAS_CLI")

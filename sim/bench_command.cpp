@@ -33,6 +33,7 @@ int bench_command(const BenchOptions& o) {
         c.dim = d;
         c.n = static_cast<std::size_t>(n);
         c.packing = o.packing;
+        c.start_packing = o.start_packing;
         c.collisions = static_cast<std::uint64_t>(o.min_collisions);
         c.repeats = o.reps;
         c.seed = o.seed;

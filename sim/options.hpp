@@ -32,6 +32,7 @@ struct RunOptions {
   double until = -1.0;           ///< end time; not given = engine default
   double every = -1.0;           ///< sampling interval; not given = until / 50
   double packing = 0.1;          ///< EDMD packing fraction eta
+  double start_packing = 0.0;    ///< EDMD: lattice start packing, compressed to eta (0: eta)
   double mass_ratio = 1.0;       ///< m2 / m1 of a two-mass gas (1 = one species)
   double fraction = 0.5;         ///< number fraction of the heavy species
   double temperature = 1.0;      ///< initial kT (DSMC velocity scale; EDMD fixes kT = 1)
@@ -59,6 +60,7 @@ struct BenchOptions {
   std::vector<long long> ns{100000};        ///< particle numbers to measure
   std::string model{dsmc::HardSpheres::name};  ///< DSMC model
   double packing = 0.1;                     ///< EDMD packing fraction
+  double start_packing = 0.0;               ///< EDMD lattice start packing (0: packing)
   int reps = 3;                             ///< timed runs per point (median reported)
   double min_collisions = 5e6;              ///< accepted collisions per timed run
   std::vector<int> threads{1};              ///< DSMC: thread counts to time, each 1..64

@@ -55,6 +55,7 @@ std::vector<std::string> run_arguments(const RunOptions& o) {
   add("--fraction", num(o.fraction));
   if (edmd) {
     add("--packing", num(o.packing));
+    if (o.start_packing > 0.0) add("--start-packing", num(o.start_packing));
   } else {
     add("--model", o.model);
     if (o.model == dsmc::VariableHardSpheres::name) add("--vhs-exponent", num(o.vhs_exponent));

@@ -22,10 +22,10 @@ namespace {
 constexpr double equilibration_fraction = 0.2;
 constexpr int equilibration_stops = 10;
 
-template <int D, bool Species>
+template <int D, bool Species, class Scan>
 RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress, RunContext& ctx) {
   constexpr Features F{.positions = true, .species = Species};
-  using Engine = edmd::Engine<D, F>;
+  using Engine = edmd::Engine<D, F, Scan>;
   static_assert(SimulationEngine<Engine>);
   using Clock = std::chrono::steady_clock;
   const double until = o.until > 0.0 ? o.until : 20.0;
@@ -66,6 +66,7 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress, RunCo
       {"energy_rel_drift", energy_rel_drift(c0, c1)},
       {"momentum_drift", momentum_drift(c0, c1)},
       {"packing", engine.packing()},
+      {"scan", std::string(Engine::scan_name)},
       {"Z", engine.pressure_Z()},
       {"collision_rate", engine.collision_rate()},
       {"mean_free_time", engine.mean_free_time()},
@@ -94,11 +95,16 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress, RunCo
 RunRecord simulate_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
   const edmd::Config cfg = edmd_config(o);
   const bool species = two_species(o);
+  // The scan follows the density regime (registry::regime); a checkpoint holds the same
+  // packing, so a resumed run gets the scan it was saved with.
   return registry::dispatch(
-      [&](auto dim, auto sp) {
-        return run<decltype(dim)::type::value, decltype(sp)::type::value>(o, cfg, progress, ctx);
+      [&](auto dim, auto sp, auto dense) {
+        constexpr int D = decltype(dim)::type::value;
+        using Scan = registry::RegimeScan<typename decltype(dense)::type, D>;
+        return run<D, decltype(sp)::type::value, Scan>(o, cfg, progress, ctx);
       },
-      registry::dimension(o.dim), registry::species(species));
+      registry::dimension(o.dim), registry::species(species),
+      registry::regime(o.dim, cfg.packing));
 }
 
 }  // namespace hypergas::cli

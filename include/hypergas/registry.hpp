@@ -56,20 +56,30 @@ static_assert(Dims::size == max_dim - min_dim + 1, "Dims must list min_dim..max_
 /// The DSMC collision models (each has static `name` and `help`, dsmc/models.hpp).
 using Models = TypeList<dsmc::HardSpheres, dsmc::MaxwellMolecules, dsmc::VariableHardSpheres>;
 
-/// The EDMD neighbour-scan choice "auto": the measured fastest policy for the dimension,
-/// edmd::AutoScan<D> (`ScanFor<Choice, D>` resolves it).
+/// The EDMD neighbour-scan choice "auto": the measured fastest policy for the dimension
+/// and density, edmd::AutoScan<D> or, from packing edmd::list_packing(D) on,
+/// edmd::DenseScan<D> (`regime` and `RegimeScan` resolve it).
 struct AutomaticScan {
   static constexpr std::string_view name = "auto";
-  static constexpr std::string_view help = "the fastest scan for D (slab, horizon, filtered)";
+  static constexpr std::string_view help =
+      "the fastest scan for D and packing (slab, horizon, filtered, lists)";
 };
 
 /// The EDMD neighbour-scan policies (edmd/scan.hpp), "auto" first.
-using Scans = TypeList<AutomaticScan, edmd::SlabScan, edmd::HorizonScan, edmd::FilteredScan>;
+using Scans = TypeList<AutomaticScan, edmd::SlabScan, edmd::HorizonScan, edmd::FilteredScan,
+                       edmd::ListScan>;
 
-/// The scan policy type of a Scans choice in dimension D.
-template <class Chosen, int D>
-using ScanFor =
-    std::conditional_t<std::is_same_v<Chosen, AutomaticScan>, edmd::AutoScan<D>, Chosen>;
+/// The density regimes of EDMD: below edmd::list_packing(D) (false) or from it on (true).
+using Regimes = TypeList<std::false_type, std::true_type>;
+
+/// The scan policy of the automatic choice in dimension D and regime Dense.
+template <class Dense, int D>
+using RegimeScan = std::conditional_t<Dense::value, edmd::DenseScan<D>, edmd::AutoScan<D>>;
+
+/// The scan policy type of a Scans choice in dimension D, "auto" in regime Dense.
+template <class Chosen, int D, class Dense = std::false_type>
+using ScanFor = std::conditional_t<std::is_same_v<Chosen, AutomaticScan>,
+                                   RegimeScan<Dense, D>, Chosen>;
 
 /// The feature "two species" (Features::species): off, on.
 using SpeciesFlags = TypeList<std::false_type, std::true_type>;
@@ -235,6 +245,11 @@ inline Choice<Models> model(std::string_view name) {
 
 /// The EDMD neighbour scan named `name` ("auto" or a policy's name); throws InvalidInput.
 inline Choice<Scans> scan(std::string_view name) { return choose<Scans>(name, "EDMD scan"); }
+
+/// The density regime of an EDMD run in dimension dim at this packing fraction.
+inline Choice<Regimes> regime(int dim, double packing) {
+  return {packing >= edmd::list_packing(dim) ? 1u : 0u};
+}
 
 /// Two species (Features::species) or one.
 inline Choice<SpeciesFlags> species(bool two) { return {two ? 1u : 0u}; }

@@ -90,10 +90,11 @@ class Dsmc final : public Common<dsmc::Engine<D, Model, Features{.species = Spec
   int threads_ = 1;
 };
 
-template <int D, bool Species>
+template <int D, bool Species, class Scan>
 class Edmd final
-    : public Common<edmd::Engine<D, Features{.positions = true, .species = Species}>, EdmdHandle> {
-  using Engine = edmd::Engine<D, Features{.positions = true, .species = Species}>;
+    : public Common<edmd::Engine<D, Features{.positions = true, .species = Species}, Scan>,
+                    EdmdHandle> {
+  using Engine = edmd::Engine<D, Features{.positions = true, .species = Species}, Scan>;
   static_assert(SimulationEngine<Engine>);
   using Common<Engine, EdmdHandle>::e_;
 
@@ -169,10 +170,11 @@ std::unique_ptr<DsmcHandle> make_dsmc_dim(const cli::RunOptions& o, const dsmc::
 template <int D>
 std::unique_ptr<EdmdHandle> make_edmd_dim(const cli::RunOptions& o, const edmd::Config& cfg) {
   return registry::dispatch(
-      [&](auto species) -> std::unique_ptr<EdmdHandle> {
-        return std::make_unique<Edmd<D, decltype(species)::type::value>>(cfg);
+      [&](auto species, auto dense) -> std::unique_ptr<EdmdHandle> {
+        using Scan = registry::RegimeScan<typename decltype(dense)::type, D>;
+        return std::make_unique<Edmd<D, decltype(species)::type::value, Scan>>(cfg);
       },
-      registry::species(cli::two_species(o)));
+      registry::species(cli::two_species(o)), registry::regime(D, cfg.packing));
 }
 
 }  // namespace hypergas::python::detail

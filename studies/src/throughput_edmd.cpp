@@ -33,10 +33,15 @@ void edmd_case(const EdmdCase& c, std::ostream& out) {
     cfg.n = c.n;
     cfg.packing = c.packing;
     cfg.seed = c.seed + static_cast<std::uint64_t>(r);
+    cfg.start_packing = c.start_packing;
+    const Stopwatch setup_clock(false);
     edmd::Engine<D, Features{.positions = true}, Scan> e(cfg);
+    const double setup_s = setup_clock.seconds();
     const double per_particle = c.warmup >= 0.0 ? c.warmup : edmd_warmup(D, c.packing);
     const auto warm = static_cast<std::uint64_t>(per_particle * static_cast<double>(c.n) / 2.0);
+    const Stopwatch warmup_clock(false);
     while (e.collisions() < warm) e.step();
+    const double warmup_s = warmup_clock.seconds();
     e.reset_observables();
     const std::uint64_t c0 = e.collisions(), x0 = e.crossings(), s0 = e.stale_events(),
                         p0 = e.pairs_tested(), n0 = e.scans();
@@ -55,13 +60,15 @@ void edmd_case(const EdmdCase& c, std::ostream& out) {
     char buf[800];
     std::snprintf(buf, sizeof buf,
                   "{\"bench\":\"edmd\",\"queue\":\"%s\",\"scan\":\"%s\",\"dim\":%d,\"n\":%zu,"
-                  "\"packing\":%.6g,\"repeat\":%d,"
+                  "\"packing\":%.6g,\"start_packing\":%.6g,\"setup_s\":%.3f,\"warmup_s\":%.3f,"
+                  "\"repeat\":%d,"
                   "\"collisions\":%llu,\"wall_s\":%.4f,\"cpu_s\":%.4f,\"collisions_per_s\":%.1f,"
                   "\"bytes_per_particle\":%.1f,\"cells_per_side\":%d,\"warmup_per_particle\":%g,"
                   "\"Z\":%.5f,\"Z_eos\":%s,"
                   "\"crossings_per_collision\":%.3f,\"stale_per_collision\":%.3f,"
                   "\"pairs_per_collision\":%.1f,\"scans_per_collision\":%.3f}",
-                  queue_name, std::string(Scan::name).c_str(), D, c.n, c.packing, r,
+                  queue_name, std::string(Scan::name).c_str(), D, c.n, c.packing,
+                  c.start_packing > 0.0 ? c.start_packing : c.packing, setup_s, warmup_s, r,
                   static_cast<unsigned long long>(c.collisions), wall, cpu, rate,
                   e.bytes_per_particle(), e.cells_per_side(), per_particle, z, eos,
                   static_cast<double>(e.crossings() - x0) / per,
@@ -88,11 +95,16 @@ double edmd_warmup(int dim, double packing) {
 
 void run_edmd_bench(const EdmdCase& c, std::ostream& out) {
   registry::dispatch(
-      [&](auto dim, auto scan) {
+      [&](auto dim, auto scan, auto dense) {
         constexpr int D = decltype(dim)::type::value;
-        edmd_case<D, registry::ScanFor<typename decltype(scan)::type, D>>(c, out);
+        using Chosen = typename decltype(scan)::type;
+        using Dense = typename decltype(dense)::type;
+        // "auto" follows the density regime; a named scan is the same in both.
+        if constexpr (std::is_same_v<Chosen, registry::AutomaticScan> || !Dense::value)
+          edmd_case<D, registry::ScanFor<Chosen, D, Dense>>(c, out);
       },
-      registry::dimension(c.dim), registry::scan(c.scan));
+      registry::dimension(c.dim), registry::scan(c.scan),
+      registry::regime(c.dim, c.scan == "auto" ? c.packing : 0.0));
 }
 
 std::vector<EdmdCase> default_edmd_cases() {

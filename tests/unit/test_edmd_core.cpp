@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "hypergas/edmd/engine.hpp"
+#include "hypergas/registry.hpp"
 
 using namespace hypergas;
 using namespace hypergas::edmd;
@@ -281,6 +282,41 @@ TEST_CASE("the automatic scan policy is slab in D <= 2, horizon in 3D, filtered 
   STATIC_REQUIRE(Engine<5>::scan_name == "filtered");
 }
 
+TEST_CASE("the automatic scan follows the density: lists from packing 0.43 in 3D only",
+          "[edmd]") {
+  STATIC_REQUIRE(std::is_same_v<DenseScan<3>, ListScan>);
+  STATIC_REQUIRE(std::is_same_v<DenseScan<2>, AutoScan<2>>);
+  STATIC_REQUIRE(std::is_same_v<DenseScan<6>, AutoScan<6>>);
+  REQUIRE(registry::regime(3, 0.45).index == 1);
+  REQUIRE(registry::regime(3, 0.2618).index == 0);
+  REQUIRE(registry::regime(6, 0.45).index == 0);
+  using Dense = registry::RegimeScan<std::true_type, 3>;
+  STATIC_REQUIRE(std::is_same_v<Dense, ListScan>);
+}
+
+TEST_CASE("lists through a compression and a dense crystal: no overlap, energy to round-off",
+          "[edmd]") {
+  // 3D fcc at packing 0.6: the lattice gap is below 10% of a diameter, so the engine starts
+  // from 0.9 of it and grows the diameters back (Lubachevsky-Stillinger), with the lists
+  // made for the growing diameters (listing distance = cell width); the all-pairs overlap
+  // check runs at each compression stage and then after every event.
+  Config cfg;
+  cfg.n = 500;
+  cfg.packing = 0.6;
+  cfg.seed = 9;
+  cfg.debug_overlap = true;
+  Engine<3, Features{.positions = true}, ListScan> e(cfg);
+  REQUIRE(e.cells_per_side() >= 3);
+  REQUIRE(e.packing() == Approx(0.6).epsilon(1e-12));
+  const double E0 = e.kinetic_energy();
+  const std::uint64_t x0 = e.crossings(), target = e.collisions() + 5000;
+  REQUIRE_NOTHROW([&] {
+    while (e.collisions() < target) e.step();
+  }());
+  REQUIRE(e.crossings() > x0);  // lists were renewed in the run
+  REQUIRE(std::abs(e.kinetic_energy() - E0) <= 1e-12 * E0);
+}
+
 TEST_CASE("run_until rejects a past or non-finite time and a bad sampling interval",
           "[edmd]") {
   // Observed at t0 + k every while <= t, and time() == t afterwards.
@@ -310,11 +346,12 @@ TEST_CASE("run_until rejects a past or non-finite time and a bad sampling interv
   REQUIRE(e.time() == 1.0);
 }
 
-TEMPLATE_TEST_CASE_SIG("horizon, filtered and slab scans give the same collisions", "[edmd]",
-                       ((int D), D), 2, 3, 4, 5, 6) {
+TEMPLATE_TEST_CASE_SIG("horizon, filtered, list and slab scans give the same collisions",
+                       "[edmd]", ((int D), D), 2, 3, 4, 5, 6) {
   // The horizon scan (HorizonScan, scan.hpp) skips stencil cells that cannot hold a
   // partner before the particle's next crossing, the filtered scan also skips particles
-  // whose path boxes are too far; the slab scan skips nothing. All must find every collision, so from the
+  // whose path boxes are too far, the list scan tests only the particles listed near the
+  // particle and renews its list as an event; the slab scan skips nothing. All must find every collision, so from the
   // same start they run the same trajectory, apart from round-off (scans at different
   // times compute a pair time from positions advanced differently): after one collision
   // per particle that difference is ~1e-14, far below the 1e-8 asserted, while one missed
@@ -333,14 +370,16 @@ TEMPLATE_TEST_CASE_SIG("horizon, filtered and slab scans give the same collision
     Engine<D, Features{.positions = true}, SlabScan> slab(cfg);
     Engine<D, Features{.positions = true}, HorizonScan> horizon(cfg);
     Engine<D, Features{.positions = true}, FilteredScan> filtered(cfg);
+    Engine<D, Features{.positions = true}, ListScan> lists(cfg);
     REQUIRE(slab.scan_name == "slab");
+    REQUIRE(lists.scan_name == "lists");
     REQUIRE(horizon.scan_name == "horizon");
     REQUIRE(filtered.scan_name == "filtered");
     INFO("D = " << D << ", n = " << cfg.n << ", cells per side " << slab.cells_per_side()
                 << " (filtered: " << filtered.cells_per_side() << ")");
     REQUIRE(slab.cells_per_side() >= 3);
     if (!check) REQUIRE(filtered.cells_per_side() >= 5);
-    LastState a, b, c;
+    LastState a, b, c, d;
     double tau = 0.0;
     while (slab.collisions() < 2 * cfg.n) slab.run_until(tau += 0.05);  // ~4 per particle
     slab.run_until(tau + 0.01, &a, 1.0);
@@ -348,14 +387,21 @@ TEMPLATE_TEST_CASE_SIG("horizon, filtered and slab scans give the same collision
     horizon.run_until(tau + 0.01, &b, 1.0);
     filtered.run_until(tau);
     filtered.run_until(tau + 0.01, &c, 1.0);
+    lists.run_until(tau);
+    lists.run_until(tau + 0.01, &d, 1.0);
     REQUIRE(slab.collisions() == horizon.collisions());
     REQUIRE(slab.collisions() == filtered.collisions());
+    REQUIRE(slab.collisions() == lists.collisions());
+    // the lists were renewed (each renewal is a crossing event): ~0.3-0.5 per collision
+    if (lists.cells_per_side() >= 3) REQUIRE(lists.crossings() > slab.collisions() / 10);
     REQUIRE(a.x.size() == b.x.size());
     REQUIRE(a.x.size() == c.x.size());
+    REQUIRE(a.x.size() == d.x.size());
     double dmax = 0.0;
     for (std::size_t k = 0; k < a.x.size(); ++k)
       dmax = std::max({dmax, std::abs(a.x[k] - b.x[k]) + std::abs(a.v[k] - b.v[k]),
-                       std::abs(a.x[k] - c.x[k]) + std::abs(a.v[k] - c.v[k])});
+                       std::abs(a.x[k] - c.x[k]) + std::abs(a.v[k] - c.v[k]),
+                       std::abs(a.x[k] - d.x[k]) + std::abs(a.v[k] - d.v[k])});
     INFO("largest position + velocity difference " << dmax);
     REQUIRE(dmax < 1e-8);
     // the horizon scan did skip pairs, and the filter skipped more where it works (>= 5

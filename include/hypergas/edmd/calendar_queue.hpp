@@ -34,15 +34,12 @@ class CalendarQueue {
  public:
   /// Builds the calendar from `times[i]` for every particle i (O(n)).
   void build(const std::vector<double>& times) {
-    const auto n = static_cast<std::uint32_t>(times.size());
-    t_ = times;
-    next_.assign(n, none);
-    prev_.assign(n, none);
-    bucket_.assign(n, 0);
+    node_.assign(times.size(), Node{});
+    for (std::size_t i = 0; i < times.size(); ++i) node_[i].t = times[i];
     rebuild();
   }
-  bool empty() const { return t_.empty(); }
-  std::size_t size() const { return t_.size(); }
+  bool empty() const { return node_.empty(); }
+  std::size_t size() const { return node_.size(); }
   /// Particle with the earliest event, and that time.
   std::uint32_t top() {
     settle();
@@ -50,15 +47,25 @@ class CalendarQueue {
   }
   double top_time() {
     settle();
-    return t_[static_cast<std::uint32_t>(min_)];
+    return node_[static_cast<std::uint32_t>(min_)].t;
   }
-  double time_of(std::uint32_t id) const { return t_[id]; }
+  double time_of(std::uint32_t id) const { return node_[id].t; }
   /// Sets the event time of particle `id`.
   void update(std::uint32_t id, double t) {
     unlink(id);
     if (static_cast<std::int32_t>(id) == min_) min_ = none;
-    t_[id] = t;
+    node_[id].t = t;
     link(id);
+  }
+  /// First entry of the bucket k after the current one (or -1): an event due soon, for
+  /// the engine to prefetch its data while it handles the current one.
+  std::int32_t ahead(std::uint32_t k) const {
+    const std::uint32_t b = cur_ + k;
+    return b < nb_ ? head_[b] : none;
+  }
+  /// Asks the processor for entry id (its time and links).
+  void prefetch(std::int32_t id) const {
+    if (id != none) __builtin_prefetch(&node_[static_cast<std::uint32_t>(id)]);
   }
   /// Saves or restores the whole calendar, links included (hypergas/checkpoint.hpp): the
   /// order within a bucket decides between equal times, so a rebuilt calendar could pop
@@ -66,15 +73,24 @@ class CalendarQueue {
   template <class Archive>
   void io(Archive& a) {
     a.tag("calendar");
-    a(t_, next_, prev_, bucket_, head_, nb_, cur_, min_, base_, inv_w_);
+    a(node_, head_, nb_, cur_, min_, base_, inv_w_);
   }
-  /// Bytes per particle (time, two links, bucket index, and one bucket head per particle).
+  /// Bytes per particle (an entry and one bucket head per particle).
   static constexpr double bytes_per_particle() {
-    return sizeof(double) + 4 * sizeof(std::int32_t);
+    return sizeof(Node) + sizeof(std::int32_t);
   }
 
  private:
   static constexpr std::int32_t none = -1;
+  /// One entry: its time and links together (16 bytes, four to a cache line), so that
+  /// unlinking, relinking and scanning a bucket touch one line per entry, not one per
+  /// array. An entry's bucket is not stored: bucket_for(t) gives it again (an entry's
+  /// bucket is never before cur_, which stops at the first non-empty bucket, and base_ and
+  /// the width change only when rebuild() relinks every entry).
+  struct Node {
+    double t = 0.0;
+    std::int32_t next = none, prev = none;
+  };
 
   std::uint32_t bucket_for(double t) const {
     const double x = (t - base_) * inv_w_;
@@ -82,22 +98,23 @@ class CalendarQueue {
     return std::max(cur_, x > 0.0 ? static_cast<std::uint32_t>(x) : 0u);
   }
   void link(std::uint32_t id) {
-    const std::uint32_t b = bucket_for(t_[id]);
-    bucket_[id] = b;
+    Node& e = node_[id];
+    const std::uint32_t b = bucket_for(e.t);
     const std::int32_t h = head_[b];
-    next_[id] = h;
-    prev_[id] = none;
-    if (h != none) prev_[h] = static_cast<std::int32_t>(id);
+    e.next = h;
+    e.prev = none;
+    if (h != none) node_[static_cast<std::uint32_t>(h)].prev = static_cast<std::int32_t>(id);
     head_[b] = static_cast<std::int32_t>(id);
     // A cached minimum stays the minimum unless this entry is earlier.
-    if (min_ != none && t_[id] < t_[static_cast<std::uint32_t>(min_)])
+    if (min_ != none && e.t < node_[static_cast<std::uint32_t>(min_)].t)
       min_ = static_cast<std::int32_t>(id);
   }
   void unlink(std::uint32_t id) {
-    const std::int32_t p = prev_[id], nx = next_[id];
-    if (p != none) next_[p] = nx;
-    else head_[bucket_[id]] = nx;
-    if (nx != none) prev_[nx] = p;
+    const Node& e = node_[id];
+    const std::int32_t p = e.prev, nx = e.next;
+    if (p != none) node_[static_cast<std::uint32_t>(p)].next = nx;
+    else head_[bucket_for(e.t)] = nx;
+    if (nx != none) node_[static_cast<std::uint32_t>(nx)].prev = p;
   }
   /// Makes min_ the earliest entry: scans the current bucket, advancing (and starting a new
   /// year) while it is empty.
@@ -109,19 +126,22 @@ class CalendarQueue {
         continue;
       }
       min_ = k;
-      for (k = next_[k]; k != none; k = next_[k])
-        if (t_[k] < t_[min_]) min_ = k;
+      double tmin = node_[static_cast<std::uint32_t>(k)].t;
+      for (k = node_[static_cast<std::uint32_t>(k)].next; k != none;
+           k = node_[static_cast<std::uint32_t>(k)].next)
+        if (node_[static_cast<std::uint32_t>(k)].t < tmin)
+          min_ = k, tmin = node_[static_cast<std::uint32_t>(k)].t;
     }
   }
   /// New year: base = earliest time, width from the mean lead of the finite times.
   void rebuild() {
-    const std::size_t n = t_.size();
+    const std::size_t n = node_.size();
     double lo = INFINITY, sum = 0.0;
     std::size_t finite = 0;
-    for (double t : t_)
-      if (std::isfinite(t)) lo = std::min(lo, t);
-    for (double t : t_)
-      if (std::isfinite(t)) sum += t - lo, ++finite;
+    for (const Node& e : node_)
+      if (std::isfinite(e.t)) lo = std::min(lo, e.t);
+    for (const Node& e : node_)
+      if (std::isfinite(e.t)) sum += e.t - lo, ++finite;
     nb_ = static_cast<std::uint32_t>(std::max<std::size_t>(n, 1));
     const double mean = finite ? sum / static_cast<double>(finite) : 0.0;
     double w = 4.0 * mean / static_cast<double>(nb_);
@@ -135,9 +155,7 @@ class CalendarQueue {
     if (!std::isfinite(lo) && n > 0) min_ = static_cast<std::int32_t>(head_[nb_]);  // all never
   }
 
-  std::vector<double> t_;
-  std::vector<std::int32_t> next_, prev_;
-  std::vector<std::uint32_t> bucket_;
+  std::vector<Node> node_;
   std::vector<std::int32_t> head_;  // nb_ buckets + the overflow list
   std::uint32_t nb_ = 0, cur_ = 0;
   std::int32_t min_ = none;

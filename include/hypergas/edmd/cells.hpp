@@ -40,9 +40,12 @@ class Cells {
 
   /// Grid for a box of side `L` with cells at least `min_width` wide, for `n` particles,
   /// with at most about `per_particle` cells per particle (memory).
-  void build(double L, double min_width, std::size_t n, double per_particle = 2.0) {
-    m_ = static_cast<int>(std::floor(L / min_width * (1.0 - 1e-12)));
-    if (m_ < 2)
+  /// With `extra` > 0 the cells are at least min_width + extra wide (neighbour lists), and a
+  /// box of fewer than 3 such cells is one cell.
+  void build(double L, double min_width, std::size_t n, double per_particle = 2.0,
+             double extra = 0.0) {
+    m_ = static_cast<int>(std::floor(L / (min_width + extra) * (1.0 - 1e-12)));
+    if (std::floor(L / min_width * (1.0 - 1e-12)) < 2.0)
       throw InvalidInput("box side " + std::to_string(L) + " is below twice the contact distance " +
                          std::to_string(min_width) + ": enlarge N or lower the packing");
     // Cap the number of cells (memory).

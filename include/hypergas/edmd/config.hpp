@@ -14,6 +14,11 @@ namespace hypergas::edmd {
 struct Config {
   std::size_t n = 1000;       ///< number of particles (>= 2)
   double packing = 0.1;       ///< target packing fraction eta = sum_i v_D(sigma_i/2) / L^D
+  /// Packing fraction of the lattice start, if below `packing` (0: start at `packing`):
+  /// the diameters start at (start_packing / packing)^(1/D) of their size, and the
+  /// Lubachevsky–Stillinger compression (growth_rate) grows them to it. The way to a dense
+  /// fluid or glass: a lattice started at the target stays a crystal above melting.
+  double start_packing = 0.0;
   std::uint64_t seed = 1;     ///< seed of the positions and velocities
   InitialState init = InitialState::maxwell;  ///< initial velocity state (initial_state.hpp)
   InitialParams initial{};    ///< kT, mixture fraction and mass ratio of the state

@@ -91,6 +91,11 @@ struct State {
     // Lubachevsky-Stillinger compression (compression.hpp) grow them back.
     const double fit = sites.nearest / max_base;
     scale_ref = fit >= 1.1 ? 1.0 : 0.9 * fit;
+    if (cfg.start_packing != 0.0) {
+      if (!(cfg.start_packing > 0.0 && cfg.start_packing <= cfg.packing))
+        throw InvalidInput("start packing must be in (0, packing]");
+      scale_ref = std::min(scale_ref, std::pow(cfg.start_packing / cfg.packing, 1.0 / D));
+    }
   }
 
   /// Saves or restores the whole state (hypergas/checkpoint.hpp).
@@ -141,10 +146,11 @@ struct State {
     }
   }
   /// Builds the cell grid for the current diameters (at most `per_particle` cells per
-  /// particle) and files every particle (in the box) in its cell.
-  void build_cells(double per_particle) {
+  /// particle, each at least `extra` wider than the largest contact distance) and files
+  /// every particle (in the box) in its cell.
+  void build_cells(double per_particle, double extra = 0.0) {
     const std::size_t n = size();
-    cells.build(L, max_base * diameter_scale(), n, per_particle);
+    cells.build(L, max_base * diameter_scale(), n, per_particle, extra);
     for (std::uint32_t i = 0; i < n; ++i) {
       std::array<int, D> c;
       for (int k = 0; k < D; ++k) c[k] = cells.coord(p.position(i)[k]);
@@ -190,11 +196,11 @@ struct State {
     for (std::size_t i = 0; i < p.size(); ++i) v += ball_volume(D, contact(i, i));
     return v / std::pow(L, D);
   }
-  /// Largest diameter scale the current cells allow (cell width / largest base diameter).
-  /// In the one-cell box (fewer than 3 cells per side) the limit is half the box side: a
-  /// sphere must not touch its own image.
-  double max_scale_for_cells() const {
-    return (cells.per_side() == 1 ? 0.5 * L : cells.width()) / max_base;
+  /// Largest diameter scale the current cells allow ((cell width - extra) / largest base
+  /// diameter, `extra` as in build_cells). In the one-cell box (fewer than 3 cells per
+  /// side) the limit is half the box side: a sphere must not touch its own image.
+  double max_scale_for_cells(double extra = 0.0) const {
+    return (cells.per_side() == 1 ? 0.5 * L : cells.width() - extra) / max_base;
   }
   /// Checks all pairs (O(N^2)); throws std::logic_error naming an overlapping pair.
   void check_overlaps() const {

@@ -62,6 +62,7 @@ struct EdmdCase {
   int dim = 3;
   std::size_t n = 32000;
   double packing = 0.26;
+  double start_packing = 0.0;  ///< lattice start packing, compressed to `packing` (0: none)
   std::uint64_t collisions = 2000000;
   int repeats = 3;
   /// Collisions per particle before timing; < 0: edmd_warmup(dim, packing).

@@ -27,7 +27,7 @@ for rep in 1 2 3; do
     [ $((rep % 2)) = 0 ] && order="cell single hg"
     for who in $order; do
       case $who in
-        hg) r=$("$H" bench --engine edmd --dim 3 -n "$n" --packing "$eta" --reps 1 | head -1 |
+        hg) r=$("$H" bench --engine edmd --dim 3 -n "$n" --packing "$eta" --reps 1 | awk "NR == 1" |
                 python3 -c 'import json,sys; j=json.load(sys.stdin); print(j["collisions_per_s"], j["Z"], j["bytes_per_particle"])') ;;
         single) r=$("$S/Single/md" "$n" "$eta" "$tmax" "$warm" | grep BENCH | sed 's/.*rate_after_warmup=//') ;;
         cell) [ "$eta" != 0.2618 ] && continue

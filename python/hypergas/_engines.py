@@ -249,9 +249,11 @@ class EDMD(_Engine):
     """Event-driven molecular dynamics of hard spheres in a periodic box.
 
     Keyword arguments are the options of ``hypergas run --engine edmd``: ``dim``, ``n``,
-    ``packing`` (volume fraction, below jamming), ``init`` (default "maxwell"),
-    ``mass_ratio``, ``fraction`` and ``seed``. The particles start on a lattice (compressed
-    when the packing needs it); a dense start takes a while.
+    ``packing`` (volume fraction, below jamming), ``start_packing``, ``init`` (default
+    "maxwell"), ``mass_ratio``, ``fraction`` and ``seed``. The particles start on a lattice
+    at ``packing``, or at ``start_packing`` and then compressed (Lubachevsky-Stillinger) to
+    ``packing``: a dense fluid rather than a crystal; a dense start takes a while. From
+    packing 0.43 on in 3D the engine scans neighbour lists, below it cells.
 
     Units: sigma = m = kT = 1; time in sigma sqrt(m/kT); lengths in sigma.
     The engine renumbers particles by position from time to time (memory locality):
@@ -261,9 +263,10 @@ class EDMD(_Engine):
 
     _kind = "edmd"
 
-    def __init__(self, dim=3, n=10000, *, packing=None, init=None, seed=None,
-                 mass_ratio=None, fraction=None):
-        super().__init__(_hypergas.make_edmd(dim=dim, n=n, packing=packing, init=init,
+    def __init__(self, dim=3, n=10000, *, packing=None, start_packing=None, init=None,
+                 seed=None, mass_ratio=None, fraction=None):
+        super().__init__(_hypergas.make_edmd(dim=dim, n=n, packing=packing,
+                                             start_packing=start_packing, init=init,
                                              seed=seed, mass_ratio=mass_ratio,
                                              fraction=fraction))
         self.seed = 1 if seed is None else int(seed)

@@ -137,6 +137,7 @@ cli::RunOptions run_options(registry::EngineKind kind, const py::kwargs& kw,
     else if (k == "init") o.init = as_text(k, value);
     else if (k == "vhs_exponent") o.vhs_exponent = as_real(k, value);
     else if (k == "packing") o.packing = as_real(k, value);
+    else if (k == "start_packing") o.start_packing = as_real(k, value);
     else if (k == "mass_ratio") o.mass_ratio = as_real(k, value);
     else if (k == "fraction") o.fraction = as_real(k, value);
     else if (k == "temperature") o.temperature = as_real(k, value);
@@ -368,8 +369,9 @@ const std::vector<std::string> dsmc_keywords = {"dim",         "n",           "m
                                                 "vhs_exponent", "init",       "mass_ratio",
                                                 "fraction",     "temperature", "seed",
                                                 "threads"};
-const std::vector<std::string> edmd_keywords = {"dim",        "n",        "packing", "init",
-                                                "mass_ratio", "fraction", "seed"};
+const std::vector<std::string> edmd_keywords = {"dim",        "n",        "packing",
+                                                "start_packing", "init", "mass_ratio",
+                                                "fraction",   "seed"};
 
 }  // namespace
 }  // namespace hypergas::python

@@ -43,6 +43,7 @@ def test_dsmc_bad_values(kwargs, message):
     ({"packing": -0.1}, "packing must be a finite fraction > 0"),
     ({"packing": math.nan}, "packing must be a finite fraction > 0"),
     ({"dim": 1, "packing": 0.995}, "at most 0.99"),
+    ({"packing": 0.3, "start_packing": 0.4}, "start_packing must be > 0 and at most packing 0.3"),
     ({"n": 0}, "n must be at least 2"),
 ])
 def test_edmd_bad_values(kwargs, message):

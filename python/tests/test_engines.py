@@ -83,12 +83,16 @@ def test_dsmc_matches_the_command(cli, tmp_path):
     np.testing.assert_array_equal(h.lo, [float(r["lo"]) for r in hist])
 
 
-def test_edmd_matches_the_command(cli, tmp_path):
+@pytest.mark.parametrize("packing,start", [(0.3, None), (0.5, 0.35)])
+def test_edmd_matches_the_command(cli, tmp_path, packing, start):
     # The command equilibrates the first fifth of --until, starts the measurement window
-    # there, then samples every (until - t_eq) / 50.
+    # there, then samples every (until - t_eq) / 50. The second case is the dense regime:
+    # compressed from packing 0.35, scanned with neighbour lists.
+    extra = () if start is None else ("--start-packing", start)
     summary, rows, _ = run_cli(cli, tmp_path, "--engine", "edmd", "--dim", 3, "--n", 2000,
-                               "--packing", 0.3, "--until", 5, "--seed", 4)
-    g = hg.EDMD(dim=3, n=2000, packing=0.3, seed=4)
+                               "--packing", packing, "--until", 5, "--seed", 4, *extra)
+    assert summary["scan"] == ("horizon" if start is None else "lists")
+    g = hg.EDMD(dim=3, n=2000, packing=packing, start_packing=start, seed=4)
     g.run(1.0)
     g.reset_observables()
     rec = hg.MomentsRecorder()

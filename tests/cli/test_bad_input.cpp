@@ -62,6 +62,12 @@ TEST_CASE("run: packing at or above the D-dimensional jamming density is rejecte
                   "jamming density 0.82");
   expect_rejected({"run", "--engine", "edmd", "--dim", "1", "--packing", "1"}, "jamming");
   expect_rejected({"run", "--engine", "edmd", "--packing", "-0.1"}, "--packing must be");
+  // the start of a compression lies at or below the target, and is an EDMD option
+  expect_rejected({"run", "--engine", "edmd", "--packing", "0.3", "--start-packing", "0.4"},
+                  "--start-packing must be > 0 and at most --packing 0.3");
+  expect_rejected({"run", "--engine", "edmd", "--start-packing", "nan"}, "--start-packing");
+  expect_rejected({"run", "--engine", "dsmc", "--start-packing", "0.2"},
+                  "--start-packing applies to --engine edmd only");
 }
 
 TEST_CASE("run: unknown names are rejected", "[cli]") {

@@ -27,6 +27,13 @@ void check_dim(int d, const char* opt) {
     bad(fmt::format("{} must be a dimension in {}..{}, got {}", opt, min_dim, max_dim, d));
 }
 
+/// The lattice start of an LS compression lies in (0, packing].
+void check_start_packing(double start, double packing) {
+  if (!(std::isfinite(start) && start > 0.0 && start <= packing))
+    bad(fmt::format("--start-packing must be > 0 and at most --packing {}, got {}", packing,
+                    start));
+}
+
 void check_n(long long n) {
   if (n < 2) bad(fmt::format("--n must be at least 2 particles, got {}", n));
   if (n > (1LL << 31))
@@ -326,10 +333,7 @@ void validate(const RunOptions& o) {
     bad(fmt::format("--packing {} is at or above the jamming density {} of hard spheres in "
                     "D = {}",
                     o.packing, jam, o.dim));
-  if (o.was_given("--start-packing") &&
-      !(std::isfinite(o.start_packing) && o.start_packing > 0.0 && o.start_packing <= o.packing))
-    bad(fmt::format("--start-packing must be > 0 and at most --packing {}, got {}", o.packing,
-                    o.start_packing));
+  if (o.was_given("--start-packing")) check_start_packing(o.start_packing, o.packing);
   // 1D: the collision rate grows as 1 / (1 - eta) (measured: 835, 8493, 84933 collisions of
   // N = 30 in t = 0.5 at eta = 0.99, 0.999, 0.9999), so a run near 1 never ends.
   if (edmd && o.dim == 1 && o.packing > 0.99)
@@ -396,10 +400,7 @@ void validate(const BenchOptions& o) {
     if (o.engine != registry::name(registry::EngineKind::dsmc) && o.packing >= jamming_packing(d))
       bad(fmt::format("--packing {} is at or above the jamming density {} in D = {}", o.packing,
                       jamming_packing(d), d));
-  if (o.start_packing != 0.0 &&
-      !(std::isfinite(o.start_packing) && o.start_packing > 0.0 && o.start_packing <= o.packing))
-    bad(fmt::format("--start-packing must be > 0 and at most --packing {}, got {}", o.packing,
-                    o.start_packing));
+  if (o.start_packing != 0.0) check_start_packing(o.start_packing, o.packing);
   if (o.engine != registry::name(registry::EngineKind::dsmc) && o.packing > 0.99)
     for (int d : o.dims)
       if (d == 1) bad(fmt::format("--packing {} in D = 1: at most 0.99", o.packing));

@@ -131,14 +131,8 @@ class ListScanner {
   /// After the collision, before the scans of i and j: asks for the records of both lists
   /// at once, so that the misses of the second scan overlap the first.
   void prefetch_records(const State<D, F>& s, std::uint32_t i, std::uint32_t j) const {
-    for (const std::uint32_t q : {i, j}) {
-      const std::uint32_t* row = nb_.data() + std::size_t{q} * K_;
-      for (std::uint32_t c = 0; c < nn_[q]; ++c) {
-        const double* rec = s.p.position(row[c]).data();
-        __builtin_prefetch(rec);
-        if constexpr (State<D, F>::Store::stride > 8) __builtin_prefetch(rec + 8);
-      }
-    }
+    prefetch_row(s, i);
+    prefetch_row(s, j);
   }
   /// With the particles renumbered (Engine::reorder): rows and anchors move, entries are
   /// renamed.
@@ -168,10 +162,7 @@ class ListScanner {
     {  // leaving the sphere of radius shell/2 around the anchor
       Vec<D> d;
       for (int k = 0; k < D; ++k) {
-        double x = xi[k] - static_cast<double>(anchor_[i * D + k]);
-        x -= x > hL ? L : 0.0;
-        x += x < -hL ? L : 0.0;
-        d[k] = x;
+        d[k] = nearest_image(xi[k] - static_cast<double>(anchor_[i * D + k]), L, hL);
       }
       const double r = 0.5 * shell(s);
       const double dd = d.squaredNorm(), dv = d.dot(vi), vv = vi.squaredNorm();
@@ -183,11 +174,7 @@ class ListScanner {
     }
     const std::uint32_t n = nn_[i];
     const std::uint32_t* row = nb_.data() + std::size_t{i} * K_;
-    for (std::uint32_t c = 0; c < n; ++c) {
-      const double* rec = s.p.position(row[c]).data();
-      __builtin_prefetch(rec);
-      if constexpr (ScanState<D, F>::Store::stride > 8) __builtin_prefetch(rec + 8);
-    }
+    prefetch_row(s, i);
     s.npairs += n;
     ++s.nscan;
     if (s.dots.size() < 4 * std::size_t{n}) s.dots.resize(4 * std::size_t{n} + 64);
@@ -200,10 +187,7 @@ class ListScanner {
     for (std::uint32_t c = 0; c < n; ++c) {
       const std::uint32_t j = row[c];
       Vec<D> r = s.p.position(j) + s.p.velocity(j) * (now - s.p.local_time(j)) - xi;
-      for (int k = 0; k < D; ++k) {
-        r[k] -= r[k] > hL ? L : 0.0;
-        r[k] += r[k] < -hL ? L : 0.0;
-      }
+      for (int k = 0; k < D; ++k) r[k] = nearest_image(r[k], L, hL);
       const Vec<D> v = s.p.velocity(j) - vi;
       rv[c] = r.dot(v), vv[c] = v.squaredNorm(), rr[c] = r.squaredNorm();
       if constexpr (F.radii) s.bases[c] = s.base_contact(i, j);
@@ -222,6 +206,21 @@ class ListScanner {
   }
 
  private:
+  /// x brought to the nearest periodic image, for |x| < 3L/2 (no branch).
+  static double nearest_image(double x, double L, double hL) {
+    x -= x > hL ? L : 0.0;
+    x += x < -hL ? L : 0.0;
+    return x;
+  }
+  /// Asks for the records of every particle on q's list.
+  void prefetch_row(const State<D, F>& s, std::uint32_t q) const {
+    const std::uint32_t* row = nb_.data() + std::size_t{q} * K_;
+    for (std::uint32_t c = 0; c < nn_[q]; ++c) {
+      const double* rec = s.p.position(row[c]).data();
+      __builtin_prefetch(rec);
+      if constexpr (State<D, F>::Store::stride > 8) __builtin_prefetch(rec + 8);
+    }
+  }
   /// Square of the listing distance R (see the file comment), with a margin for round-off:
   /// the contact distance now plus the shell in a run; the whole cell width while the
   /// diameters grow (the compression stops a stage before s_max exceeds width - shell,
@@ -250,9 +249,8 @@ class ListScanner {
         const float* aj = anchor_.data() + static_cast<std::size_t>(j) * D;
         double d2 = 0.0;
         for (int k = 0; k < D; ++k) {
-          double x = static_cast<double>(aj[k]) - static_cast<double>(ai[k]);
-          x -= x > hL ? L : 0.0;
-          x += x < -hL ? L : 0.0;
+          const double x =
+              nearest_image(static_cast<double>(aj[k]) - static_cast<double>(ai[k]), L, hL);
           d2 += x * x;
         }
         if (d2 < R2) f(static_cast<std::uint32_t>(j));

@@ -1,9 +1,8 @@
 // bench_edmd: EDMD collisions per second (one core), JSON lines
 // (hypergas/studies/throughput.hpp).
-// Usage: bench_edmd [dim n packing [collisions [repeats [calendar [SCAN]]]]]
-// No arguments: the default cases. The sixth argument names the event queue; the engine
-// has one, the calendar queue (the binary heap, `heap`, was removed). SCAN picks the
-// neighbour scan: auto (the engine's default for D) or a scan policy of edmd/engine.hpp.
+// Usage: bench_edmd [dim n packing [collisions [repeats [SCAN]]]]
+// No arguments: the default cases. SCAN picks the neighbour scan: auto (the engine's
+// default for D and the packing) or a scan policy of edmd/scan.hpp.
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -14,15 +13,9 @@
 int main(int argc, char** argv) {
   using namespace hypergas::studies;
   const std::string scans = hypergas::registry::join(edmd_scan_names(), "|");
-  const std::string queue = argc > 6 ? argv[6] : "calendar";
-  if (queue == "heap") {
-    std::cerr << "bench_edmd: the binary-heap event queue was removed; the engine uses the "
-                 "calendar queue (pass calendar or nothing)\n";
-    return 2;
-  }
-  if (argc == 2 || argc == 3 || argc > 8 || queue != "calendar") {
-    std::cerr << "Usage: bench_edmd [dim n packing [collisions [repeats [calendar [" << scans
-              << "]]]]]\n"
+  if (argc == 2 || argc == 3 || argc > 7) {
+    std::cerr << "Usage: bench_edmd [dim n packing [collisions [repeats [" << scans
+              << "]]]]\n"
                  "EDMD collisions per CPU second, one JSON object per line; no arguments:\n"
                  "3D N = 4000, 32000, 256000 at eta = 0.26 and 6D N = 32000 at eta = 0.05.\n";
     const std::string a = argc > 1 ? argv[1] : "";
@@ -36,7 +29,7 @@ int main(int argc, char** argv) {
       c.packing = std::atof(argv[3]);
       if (argc >= 5) c.collisions = static_cast<std::uint64_t>(std::atoll(argv[4]));
       if (argc >= 6) c.repeats = std::atoi(argv[5]);
-      if (argc >= 8) c.scan = argv[7];
+      if (argc >= 7) c.scan = argv[6];
       run_edmd_bench(c, std::cout);
       return 0;
     }

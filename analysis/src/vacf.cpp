@@ -1,4 +1,4 @@
-// VACF and MSD by FFT (Wiener–Khinchin) and by direct sums; diffusion coefficients.
+// VACF and MSD by FFT (Wiener–Khinchin); diffusion coefficients.
 #include "hypergas/analysis/vacf.hpp"
 
 #include <fftw3.h>
@@ -105,20 +105,6 @@ std::vector<double> vacf(const std::vector<double>& v, std::size_t frames, std::
   return acc;
 }
 
-std::vector<double> vacf_direct(const std::vector<double>& v, std::size_t frames, std::size_t n,
-                                int dim, std::size_t max_lag) {
-  check_series(v, frames, n, dim, max_lag, "vacf_direct");
-  const std::size_t channels = n * static_cast<std::size_t>(dim);
-  std::vector<double> acc(max_lag + 1, 0.0);
-  for (std::size_t lag = 0; lag <= max_lag; ++lag) {
-    for (std::size_t t = 0; t + lag < frames; ++t)
-      for (std::size_t c = 0; c < channels; ++c)
-        acc[lag] += v[t * channels + c] * v[(t + lag) * channels + c];
-    acc[lag] /= static_cast<double>(n) * static_cast<double>(frames - lag);
-  }
-  return acc;
-}
-
 std::vector<double> msd(const std::vector<double>& r, std::size_t frames, std::size_t n, int dim,
                         std::size_t max_lag) {
   check_series(r, frames, n, dim, max_lag, "msd");
@@ -144,22 +130,6 @@ std::vector<double> msd(const std::vector<double>& r, std::size_t frames, std::s
   for (std::size_t m = 0; m <= max_lag; ++m)
     acc[m] = std::max(acc[m], 0.0) / (static_cast<double>(n) * static_cast<double>(frames - m));
   acc[0] = 0.0;
-  return acc;
-}
-
-std::vector<double> msd_direct(const std::vector<double>& r, std::size_t frames, std::size_t n,
-                               int dim, std::size_t max_lag) {
-  check_series(r, frames, n, dim, max_lag, "msd_direct");
-  const std::size_t channels = n * static_cast<std::size_t>(dim);
-  std::vector<double> acc(max_lag + 1, 0.0);
-  for (std::size_t lag = 0; lag <= max_lag; ++lag) {
-    for (std::size_t t = 0; t + lag < frames; ++t)
-      for (std::size_t c = 0; c < channels; ++c) {
-        const double d = r[(t + lag) * channels + c] - r[t * channels + c];
-        acc[lag] += d * d;
-      }
-    acc[lag] /= static_cast<double>(n) * static_cast<double>(frames - lag);
-  }
   return acc;
 }
 

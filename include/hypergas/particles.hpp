@@ -11,7 +11,7 @@
 //  * scenes with positions: one record [position (D), local clock (1), velocity (D)]
 //    padded to a power of two (strides 4, 8, 8, 16, 16, 16): event-driven MD reads all
 //    three of a neighbour at once, and one 64-byte record in 3D is one cache miss where
-//    three separate arrays were three (measured: Engine<3> at N = 32000).
+//    three separate arrays would be three (docs/benchmarks.md, "Kept designs").
 #pragma once
 
 #include <array>
@@ -31,8 +31,9 @@ namespace hypergas {
 /// template argument: `Particles<3, Features{.positions = true}>`.
 struct Features {
   bool positions = false;  ///< positions (event-driven MD); velocity-space scenes have none
-  bool masses = false;     ///< one mass per particle (stored as inverse mass)
-  bool radii = false;      ///< one radius per particle
+  /// No storage: Particles refuses both (dsmc::Engine's constraint names them).
+  bool masses = false;
+  bool radii = false;
   bool species = false;    ///< a small species index per particle; mass from a species table
   constexpr bool operator==(const Features&) const = default;
 };
@@ -64,7 +65,7 @@ constexpr int record_stride(int d) {
 /// Allocator that starts every array on a cache line (64 bytes). Eigen's aligned_allocator
 /// only guarantees its vector alignment (16 bytes without AVX): glibc then returns large
 /// arrays at 16 bytes past a page boundary, and every other 32-byte record would straddle
-/// two cache lines (1.6x slower DSMC at N = 1e6, docs/benchmarks.md).
+/// two cache lines (docs/benchmarks.md, "Kept designs").
 template <class T>
 struct CacheLineAllocator {
   using value_type = T;
@@ -113,7 +114,7 @@ void permute_records(Array& a, const std::vector<std::uint32_t>& from, std::size
 /// Particle storage for `n` particles in D dimensions with optional fields `F`.
 /// Units are those of the engine that owns it (see the engines' docs).
 template <int D, Features F = Features{}>
-requires Dimension<D>
+requires Dimension<D> && (!F.masses) && (!F.radii)
 class Particles {
  public:
   static constexpr int dim = D;
@@ -125,8 +126,6 @@ class Particles {
   using VecMap = Eigen::Map<Vec<D>>;
   using ConstVecMap = Eigen::Map<const Vec<D>>;
   using FlatArray = detail::AlignedVector<double>;
-  using MassArray = detail::Field<F.masses, std::vector<double>, 1>;
-  using RadiusArray = detail::Field<F.radii, std::vector<double>, 2>;
   using SpeciesArray = detail::Field<F.species, std::vector<std::uint8_t>, 3>;
   using SpeciesTable = detail::Field<F.species, std::array<double, max_species>, 4>;
 
@@ -134,13 +133,11 @@ class Particles {
   /// `n` particles at rest, unit mass; positions (if any) at the origin.
   explicit Particles(std::size_t n) { resize(n); }
 
-  /// Sets the number of particles; new entries are zero (velocity, position), mass 1,
-  /// radius 0.5 (diameter 1), species 0.
+  /// Sets the number of particles; new entries are zero (velocity, position), species 0
+  /// of mass 1.
   void resize(std::size_t n) {
     n_ = n;
     v_.assign(n * stride, 0.0);
-    if constexpr (F.masses) w_.assign(n, 1.0);
-    if constexpr (F.radii) r_.assign(n, 0.5);
     if constexpr (F.species) {
       s_.assign(n, 0);
       species_w_.fill(1.0);
@@ -166,11 +163,9 @@ class Particles {
   double local_time(std::size_t i) const requires(F.positions) { return v_[i * stride + D]; }
 
   /// Inverse mass of particle i (1/mass; 0 for an infinite mass). Unit mass when the scene
-  /// has neither masses nor species: a constant the compiler folds away.
+  /// has no species: a constant the compiler folds away.
   double inv_mass(std::size_t i) const {
-    if constexpr (F.masses)
-      return w_[i];
-    else if constexpr (F.species)
+    if constexpr (F.species)
       return species_w_[s_[i]];
     else {
       (void)i;
@@ -180,26 +175,14 @@ class Particles {
   /// Mass of particle i (infinity for inverse mass 0).
   double mass(std::size_t i) const { return 1.0 / inv_mass(i); }
 
-  /// Sets the mass of particle i; throws InvalidInput unless m > 0 (infinity allowed).
-  void set_mass(std::size_t i, double m) requires(F.masses) {
-    check_mass(m);
-    w_[i] = 1.0 / m;
-  }
-
-  /// Radius of particle i (only in scenes with radii).
-  double radius(std::size_t i) const requires(F.radii) { return r_[i]; }
-  void set_radius(std::size_t i, double r) requires(F.radii) {
-    if (!(std::isfinite(r) && r > 0.0)) throw InvalidInput("radius must be finite and > 0");
-    r_[i] = r;
-  }
-
   /// Species index of particle i (only in scenes with species).
   int species(std::size_t i) const requires(F.species) { return s_[i]; }
   void set_species(std::size_t i, int s) requires(F.species) {
     if (s < 0 || s >= max_species) throw InvalidInput("species index out of range");
     s_[i] = static_cast<std::uint8_t>(s);
   }
-  /// Mass of every particle of species s.
+  /// Mass of every particle of species s; throws InvalidInput unless m > 0 (infinity
+  /// allowed).
   void set_species_mass(int s, double m) requires(F.species) {
     if (s < 0 || s >= max_species) throw InvalidInput("species index out of range");
     check_mass(m);
@@ -224,8 +207,6 @@ class Particles {
   void permute(const std::vector<std::uint32_t>& from) {
     if (from.size() != n_) throw InvalidInput("permute: size mismatch");
     permute_records(v_, from, stride);
-    if constexpr (F.masses) permute_records(w_, from, 1);
-    if constexpr (F.radii) permute_records(r_, from, 1);
     if constexpr (F.species) permute_records(s_, from, 1);
   }
 
@@ -234,8 +215,6 @@ class Particles {
   void io(Archive& a) {
     a.tag("particles");
     a(n_, v_);
-    if constexpr (F.masses) a(w_);
-    if constexpr (F.radii) a(r_);
     if constexpr (F.species) a(s_, species_w_);
     if (v_.size() != n_ * stride) throw InvalidInput("checkpoint: particle arrays do not match");
   }
@@ -244,8 +223,6 @@ class Particles {
   double bytes_per_particle() const {
     if (n_ == 0) return 0.0;
     std::size_t b = v_.capacity() * sizeof(double);
-    if constexpr (F.masses) b += w_.capacity() * sizeof(double);
-    if constexpr (F.radii) b += r_.capacity() * sizeof(double);
     if constexpr (F.species) b += s_.capacity();
     return static_cast<double>(b) / static_cast<double>(n_);
   }
@@ -258,8 +235,6 @@ class Particles {
 
   std::size_t n_ = 0;
   FlatArray v_;  // velocities, or [position, clock, velocity] records (see file comment)
-  [[no_unique_address]] MassArray w_;
-  [[no_unique_address]] RadiusArray r_;
   [[no_unique_address]] SpeciesArray s_;
   [[no_unique_address]] SpeciesTable species_w_;
 };

@@ -47,10 +47,13 @@
 #include "hypergas/checkpoint.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/rng.hpp"
+#include "support/correlation.hpp"
 #include "test_analysis_support.hpp"
 
 using namespace hypergas;
 using namespace hypergas::analysis;
+using test_support::msd_direct;
+using test_support::vacf_direct;
 using Kind = MultiTauCorrelator::Kind;
 
 namespace {

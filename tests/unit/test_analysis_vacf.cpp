@@ -20,9 +20,12 @@
 #include "hypergas/analysis/vacf_recorder.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/rng.hpp"
+#include "support/correlation.hpp"
 
 using namespace hypergas;
 using namespace hypergas::analysis;
+using test_support::msd_direct;
+using test_support::vacf_direct;
 
 namespace {
 struct Series {

@@ -12,16 +12,18 @@ using namespace hypergas;
 namespace {
 constexpr Features velocity_only{};
 constexpr Features with_positions{.positions = true};
-constexpr Features everything{.positions = true, .masses = true, .radii = true, .species = true};
+constexpr Features everything{.positions = true, .species = true};
 
 template <int D, Features F>
 concept HasPosition = requires(Particles<D, F> p) {
   p.position(0);
 };
 template <int D, Features F>
-concept HasSetMass = requires(Particles<D, F> p) {
-  p.set_mass(0, 1.0);
+concept HasSpeciesMass = requires(Particles<D, F> p) {
+  p.set_species_mass(0, 1.0);
 };
+template <int D, Features F>
+concept Storable = requires { typename Particles<D, F>; };
 template <int D, Features F>
 concept HasSpecies = requires(Particles<D, F> p) {
   p.species(0);
@@ -30,8 +32,6 @@ concept HasSpecies = requires(Particles<D, F> p) {
 
 // A velocity-space, single-mass scene stores one size and one vector: nothing else.
 using Plain3 = Particles<3, velocity_only>;
-static_assert(std::is_empty_v<Plain3::MassArray>);
-static_assert(std::is_empty_v<Plain3::RadiusArray>);
 static_assert(std::is_empty_v<Plain3::SpeciesArray>);
 static_assert(std::is_empty_v<Plain3::SpeciesTable>);
 static_assert(sizeof(Plain3) == sizeof(std::size_t) + sizeof(Plain3::FlatArray));
@@ -41,13 +41,17 @@ static_assert(sizeof(Particles<6, velocity_only>) == sizeof(Plain3));
 static_assert(sizeof(Particles<3, with_positions>) == sizeof(Plain3));
 static_assert(Particles<3, with_positions>::stride == 8 && Plain3::stride == 4);
 static_assert(Particles<6, with_positions>::stride == 16 && Particles<1, with_positions>::stride == 4);
-static_assert(!std::is_empty_v<Particles<3, everything>::MassArray>);
+static_assert(!std::is_empty_v<Particles<3, everything>::SpeciesArray>);
 // Absent fields have no accessors: code that would use them does not compile.
 static_assert(!HasPosition<3, velocity_only>);
 static_assert(HasPosition<3, with_positions>);
-static_assert(!HasSetMass<3, velocity_only>);
-static_assert(HasSetMass<3, everything>);
+static_assert(!HasSpeciesMass<3, velocity_only>);
+static_assert(HasSpeciesMass<3, everything>);
 static_assert(!HasSpecies<2, with_positions>);
+// Features::masses and ::radii have no storage: Particles refuses them.
+static_assert(Storable<3, everything>);
+static_assert(!Storable<3, Features{.masses = true}>);
+static_assert(!Storable<3, Features{.positions = true, .radii = true}>);
 static_assert(Plain3::stride == 4 && Particles<6>::stride == 8 && Particles<1>::stride == 1);
 
 TEST_CASE("equal-mass 3D velocity storage uses 32 bytes per particle", "[particles]") {
@@ -81,20 +85,19 @@ TEST_CASE("fields read back what was written", "[particles]") {
   Particles<2, everything> p(3);
   p.velocity(1) = Vec<2>(1.0, -2.0);
   p.position(2) = Vec<2>(0.5, 0.25);
-  p.set_mass(0, 4.0);
-  p.set_radius(1, 0.75);
+  p.set_species_mass(1, 4.0);
   p.set_species(2, 1);
   REQUIRE(p.velocity(1) == Vec<2>(1.0, -2.0));
   REQUIRE(p.velocity(0) == Vec<2>::Zero());
   REQUIRE(p.position(2) == Vec<2>(0.5, 0.25));
-  REQUIRE(p.inv_mass(0) == 0.25);
-  REQUIRE(p.radius(1) == 0.75);
+  REQUIRE(p.inv_mass(2) == 0.25);
   REQUIRE(p.species(2) == 1);
-  p.set_mass(1, std::numeric_limits<double>::infinity());
+  p.set_species_mass(2, std::numeric_limits<double>::infinity());
+  p.set_species(1, 2);
   REQUIRE(p.inv_mass(1) == 0.0);
-  REQUIRE_THROWS_AS(p.set_mass(0, -1.0), InvalidInput);
-  REQUIRE_THROWS_AS(p.set_mass(0, 0.0), InvalidInput);
-  REQUIRE_THROWS_AS(p.set_mass(0, std::nan("")), InvalidInput);
+  REQUIRE_THROWS_AS(p.set_species_mass(0, -1.0), InvalidInput);
+  REQUIRE_THROWS_AS(p.set_species_mass(0, 0.0), InvalidInput);
+  REQUIRE_THROWS_AS(p.set_species_mass(0, std::nan("")), InvalidInput);
   REQUIRE_THROWS_AS(p.set_species(0, max_species), InvalidInput);
 
   Particles<3, Features{.species = true}> s(4);
@@ -106,13 +109,13 @@ TEST_CASE("fields read back what was written", "[particles]") {
 
 TEST_CASE("position, clock and velocity share a record without aliasing; permute moves all",
           "[particles]") {
-  Particles<3, Features{.positions = true, .radii = true}> p(3);
+  Particles<3, Features{.positions = true, .species = true}> p(3);
   for (std::size_t i = 0; i < 3; ++i) {
     const double a = static_cast<double>(i);
     p.position(i) = Vec<3>(a, a + 0.1, a + 0.2);
     p.local_time(i) = 10.0 + a;
     p.velocity(i) = Vec<3>(-a, -a - 0.1, -a - 0.2);
-    p.set_radius(i, 0.5 + a);
+    p.set_species(i, static_cast<int>(i));
   }
   for (std::size_t i = 0; i < 3; ++i) {
     const double a = static_cast<double>(i);
@@ -124,6 +127,6 @@ TEST_CASE("position, clock and velocity share a record without aliasing; permute
   REQUIRE(p.position(0) == Vec<3>(2.0, 2.1, 2.2));
   REQUIRE(p.local_time(0) == 12.0);
   REQUIRE(p.velocity(1) == Vec<3>(-0.0, -0.1, -0.2));
-  REQUIRE(p.radius(2) == 1.5);
+  REQUIRE(p.species(2) == 1);
   REQUIRE_THROWS_AS(p.permute({0, 1}), InvalidInput);
 }

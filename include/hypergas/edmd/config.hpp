@@ -11,8 +11,10 @@ namespace hypergas::edmd {
 /// Parameters of an EDMD run. Units: sigma (diameter of species 0) = 1, m (mass of species
 /// 0) = 1, kT = initial.kT (default 1); time in sigma sqrt(m/kT). The neighbour scan is the
 /// engine's Scan template parameter (scan.hpp), not a run parameter.
+/// These defaults are those of `hypergas run --engine edmd` and `hypergas.EDMD` (the option
+/// table, options/src/table.cpp, reads them from here).
 struct Config {
-  std::size_t n = 1000;       ///< number of particles (>= 2)
+  std::size_t n = 10000;      ///< number of particles (>= 2)
   double packing = 0.1;       ///< target packing fraction eta = sum_i v_D(sigma_i/2) / L^D
   /// Packing fraction of the lattice start, if below `packing` (0: start at `packing`):
   /// the diameters start at (start_packing / packing)^(1/D) of their size, and the
@@ -22,8 +24,6 @@ struct Config {
   std::uint64_t seed = 1;     ///< seed of the positions and velocities
   InitialState init = InitialState::maxwell;  ///< initial velocity state (initial_state.hpp)
   InitialParams initial{};    ///< kT, mixture fraction and mass ratio of the state
-  double size_ratio = 1.0;    ///< radii scenes: diameter of population 1 (the last
-                              ///< round(fraction n) particles) over that of population 0
   /// Collisions per particle between renumberings of the particles by position (memory
   /// locality, Engine::reorder; 0 = never). Does not change the trajectories.
   double reorder_interval = 10.0;

@@ -1,47 +1,23 @@
 // hypergas/edmd/engine.hpp -- event-driven molecular dynamics of hard spheres in D dims:
-// the event loop (step, collide, cross, reorder, sample, run_until).
-//
-// Public API (what the command line calls):
+// the event loop (step, collide, cross, reorder, run_until; snapshots in snapshot.hpp).
 //
 //   edmd::Config cfg;  cfg.n = 32000; cfg.packing = 0.26; cfg.seed = 7;
-//   cfg.init = InitialState::maxwell;  cfg.debug_overlap = false;
 //   edmd::Engine<3> e(cfg);              // lattice start (+ LS compression if needed)
 //   e.run_until(t, &observer, every);    // observer called at t0, t0+every, ... <= t
-//   e.time(); e.collisions();            // time in sigma sqrt(m/kT); collision count
-//   e.pressure_Z();                      // PV/(N kT) from the collision virial
-//   e.collision_rate();                  // collisions per particle per unit time
-//   e.mean_free_time();                  // 1 / collision_rate
-//   e.temperature();  e.particles();  e.bytes_per_particle();
-//   e.reset_observables();               // start a new measurement window now
-//   edmd::jamming_packing(D)             // (box.hpp) largest --packing accepted
+//   e.pressure_Z(); e.collision_rate();  // over the measurement window (observables.hpp)
 //
-// Engine<D, F, Scan>: F must have positions; F.species (or F.masses) gives two masses,
-// F.radii two sizes (Config::size_ratio). Scan is the neighbour-scan policy (scan.hpp):
-// SlabScan, HorizonScan or FilteredScan; the default AutoScan<D> is the measured fastest
-// for D. Engine::scan_name is its name. Units: sigma = 1, m = 1, kT = 1 by default.
+// Engine<D, F, Scan>: F must have positions; F.species gives two masses. Scan is the
+// neighbour-scan policy (scan.hpp); the default AutoScan<D> is the fastest for D
+// (docs/benchmarks.md). Units: sigma = m = kT = 1 by default.
 //
-// Algorithm: each particle keeps a local clock, its two earliest predicted pair events and
-// one cell-crossing time (events.hpp); the earliest is its key in the calendar queue
-// (calendar_queue.hpp). A pair event is valid only if the partner's counter is unchanged
-// (lazy invalidation); when the first is invalid the runner-up is used if still valid, else
-// the particle is scanned again. Which stencil cells a prediction scans is the Scan policy
-// (scan_slab.hpp, scan_horizon.hpp, scan_filtered.hpp); the candidates' pair times are
-// computed in a batch (prediction.hpp). An event costs O(neighbours).
-//
-// Memory: position, clock and velocity of a particle are one record (one cache line in
-// 3D, particles.hpp); a scan first lists its candidates and prefetches their records,
-// then computes, so that the ~13 records of a 3D scan arrive together; and every
-// Config::reorder_interval collisions per particle the particles are renumbered in
-// Z-order of their cells (reorder()), so that neighbours stay near in memory. None of this
-// changes a trajectory (a unit test checks bit-for-bit equality with and without).
-//
-// Correctness argument for one event per particle: if i and j will collide next among all
-// their events, the one of them whose trajectory was predicted last scanned the other with
-// both current trajectories, so its key is at most that collision time.
+// Each particle keeps a local clock, two predicted pair events and a cell crossing
+// (events.hpp); the earliest is its entry in the calendar queue. A stale pair event (the
+// partner collided since) falls back to the runner-up or a new scan. Every
+// Config::reorder_interval collisions per particle the particles are renumbered in Z-order
+// (trajectories unchanged). Design and correctness: docs/design.md, "The EDMD event loop".
 #pragma once
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -58,6 +34,7 @@
 #include "hypergas/edmd/observables.hpp"
 #include "hypergas/edmd/prediction.hpp"
 #include "hypergas/edmd/scan.hpp"
+#include "hypergas/edmd/snapshot.hpp"
 #include "hypergas/edmd/state.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/observer.hpp"
@@ -74,7 +51,7 @@ class Engine {
   using Config = edmd::Config;
   using Store = Particles<D, F>;
   static constexpr int dim = D;
-  /// The neighbour-scan policy's name: "slab", "horizon" or "filtered" (scan.hpp).
+  /// The neighbour-scan policy's name: "slab", "horizon", "filtered" or "lists" (scan.hpp).
   static constexpr std::string_view scan_name = Scan::name;
 
   /// Places cfg.n particles on a lattice at packing cfg.packing, draws velocities in state
@@ -108,11 +85,11 @@ class Engine {
     a.tag(identity());
     a(static_cast<State<D, F>&>(s_), scanner_, q_, win_, reorder_every_, next_reorder_, cfg_);
   }
-  /// "edmd D=3 scan=horizon species=0 masses=0 radii=0": what a checkpoint must match.
+  /// "edmd D=3 scan=horizon species=0 masses=0 radii=0": what a checkpoint must match
+  /// (docs/checkpoints.md; particles have neither masses nor radii of their own).
   static std::string identity() {
     return "edmd D=" + std::to_string(D) + " scan=" + std::string(Scan::name) +
-           " species=" + std::to_string(int(F.species)) + " masses=" +
-           std::to_string(int(F.masses)) + " radii=" + std::to_string(int(F.radii));
+           " species=" + std::to_string(int(F.species)) + " masses=0 radii=0";
   }
 
   // ---- running ------------------------------------------------------------------------
@@ -214,10 +191,8 @@ class Engine {
   }
   /// Starts a new measurement window for Z, collision rate and mean free time.
   void reset_observables() { win_.reset(s_.now, s_.ncoll); }
-  /// Collisions in the current window, and its sum of r_ij . dp_i (energy units * time...).
+  /// Collisions in the current window.
   std::uint64_t window_collisions() const { return win_.collisions(s_.ncoll); }
-  double window_time() const { return win_.time(s_.now); }
-  double virial_sum() const { return win_.virial; }
   /// Reduced pressure Z = PV/(N kT) = 1 + sum_coll r_ij . dp_i / (D N kT t) over the window.
   double pressure_Z() const { return win_.pressure_Z(D, size(), temperature(), s_.now); }
   /// Collisions per particle per unit time in the window (2 per collision).
@@ -460,52 +435,9 @@ class Engine {
     q_.build(keys);
   }
 
-  /// Observes the state at time ts (>= every local clock) in the original numbering: one
-  /// buffer of [position, velocity] records (2 D doubles per particle) and, for mixtures, the
-  /// species (or masses) in that order. No copy of the particle store.
-  void sample(double ts, Observer& obs) const {
-    const State<D, F>& s = s_;
-    const std::size_t n = size();
-    constexpr int st = 2 * D;
-    std::vector<double> rec(n * st);
-    for (std::size_t a = 0; a < n; ++a) {  // a: original id, i: its current slot
-      const std::size_t i = s.slot[a];
-      for (int k = 0; k < D; ++k) {
-        rec[a * st + k] = s.p.position(i)[k] + s.p.velocity(i)[k] * (ts - s.p.local_time(i)) +
-                          s.L * s.image[i * D + k];
-        rec[a * st + D + k] = s.p.velocity(i)[k];
-      }
-    }
-    Snapshot snap;
-    snap.dim = D;
-    snap.n = n;
-    snap.stride = st;
-    snap.velocities = rec.data() + D;
-    snap.positions = rec.data();
-    snap.time = ts;
-    snap.collisions = s.ncoll;
-    snap.collisions_per_particle = 2.0 * static_cast<double>(s.ncoll) / static_cast<double>(n);
-    std::vector<std::uint8_t> species;
-    std::vector<double> inv_mass;
-    std::array<double, max_species> species_w{};
-    if constexpr (F.masses) {
-      inv_mass.resize(n);
-      for (std::size_t a = 0; a < n; ++a) inv_mass[a] = s.p.inv_mass(s.slot[a]);
-      snap.inv_mass = inv_mass.data();
-    } else if constexpr (F.species) {
-      species.resize(n);
-      int ns = 1;
-      for (std::size_t a = 0; a < n; ++a) {
-        species[a] = static_cast<std::uint8_t>(s.p.species(s.slot[a]));
-        ns = std::max(ns, species[a] + 1);
-      }
-      for (int k = 0; k < max_species; ++k) species_w[k] = s.p.species_inv_mass(k);
-      snap.species = species.data();
-      snap.species_inv_mass = species_w.data();
-      snap.n_species = ns;
-    }
-    obs.observe(snap);
-  }
+  /// Observes the state at time ts (>= every local clock) in the original numbering
+  /// (snapshot.hpp).
+  void sample(double ts, Observer& obs) const { observe_state(s_, ts, obs); }
 
   ScanState<D, F> s_;        // particles, events, cells, clock, counters (state.hpp) and
                              // the scratch of the scans (prediction.hpp)

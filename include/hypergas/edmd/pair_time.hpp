@@ -2,7 +2,7 @@
 // spheres, from a numerically stable root of the contact quadratic.
 //
 // Relative position r = x_j - x_i and velocity v = v_j - v_i at the current time; contact
-// distance s (sum of radii) growing at rate a (0 except during Lubachevsky–Stillinger
+// distance s (the diameter) growing at rate a (0 except during Lubachevsky–Stillinger
 // compression). Contact at time tau solves |r + v tau| = s + a tau:
 //
 //     A tau^2 + 2 B tau + C = 0,   A = v.v - a^2,  B = r.v - s a,  C = r.r - s^2.
@@ -49,18 +49,16 @@ inline double contact_time(double rv, double vv, double rr, double s, double a =
 /// the same order (so the same results, bit for bit), with the case analysis as selects.
 /// A scan's candidates approach or recede at random, so contact_time's early returns
 /// mispredict about every other pair; here every pair pays for the square root and the
-/// division instead. Pair c has contact distance b[c] sc growing at b[c] rate (b = nullptr:
-/// b[c] = 1 for all); arrays of length n.
+/// division instead. Every pair has contact distance sc growing at `rate`; arrays of
+/// length n.
 inline void contact_times(std::size_t n, const double* rv, const double* vv, const double* rr,
-                          const double* b, double sc, double rate, double* t) {
+                          double sc, double rate, double* t) {
   std::size_t c = 0;
 #if defined(__SSE2__)
   // Two pairs per step (GCC 12 turns the scalar selects below back into branches).
   const __m128d zero = _mm_setzero_pd(), inf = _mm_set1_pd(never);
-  const __m128d vsc = _mm_set1_pd(sc), vrate = _mm_set1_pd(rate);
+  const __m128d s = _mm_set1_pd(sc), a = _mm_set1_pd(rate);
   for (; c + 2 <= n; c += 2) {
-    const __m128d bc = b ? _mm_loadu_pd(b + c) : _mm_set1_pd(1.0);
-    const __m128d s = _mm_mul_pd(bc, vsc), a = _mm_mul_pd(bc, vrate);
     const __m128d B = _mm_sub_pd(_mm_loadu_pd(rv + c), _mm_mul_pd(s, a));
     const __m128d C = _mm_sub_pd(_mm_loadu_pd(rr + c), _mm_mul_pd(s, s));
     const __m128d A = _mm_sub_pd(_mm_loadu_pd(vv + c), _mm_mul_pd(a, a));
@@ -77,8 +75,7 @@ inline void contact_times(std::size_t n, const double* rv, const double* vv, con
   }
 #endif
   for (; c < n; ++c) {
-    const double bc = b ? b[c] : 1.0;
-    const double s = bc * sc, a = bc * rate;
+    const double s = sc, a = rate;
     const double B = rv[c] - s * a;
     const double C = rr[c] - s * s;
     const double A = vv[c] - a * a;

@@ -38,8 +38,8 @@ struct ScanState : State<D, F> {
   using State<D, F>::base_contact;
 
   /// A stencil cell or a candidate of a scan. A type per engine instantiation, as is its
-  /// vector's resize: one shared type made GCC call resize out of line in gather when a
-  /// program had several engines (5.7% more instructions in gather, 3D, callgrind).
+  /// vector's resize: with one shared type GCC calls resize out of line in gather when a
+  /// program has several engines (docs/benchmarks.md, "Tried and rejected").
   struct Cand {
     std::uint32_t j, shift;  // particle (or cell), periodic shift code: 2 bits per axis,
                              // 0 none, 1 = -L, 2 = +L (AxisStep)
@@ -48,7 +48,7 @@ struct ScanState : State<D, F> {
   std::size_t ncand = 0;
   std::vector<Cand> visit;   // stencil cells (cell, shift)
   std::size_t nvisit = 0;    //   in use: [0, nvisit)
-  std::vector<double> dots, bases;  // scratch of earliest_pairs()
+  std::vector<double> dots;  // scratch of earliest_pairs()
 
   /// Lists the particles of the cells in visit, except i, as the candidates
   /// cand[0, ncand), and prefetches their records (or, records = false, their PBoxes in
@@ -57,8 +57,8 @@ struct ScanState : State<D, F> {
   /// occupied one), so a loop per cell would mispredict its exit at most cells: the first
   /// two members are written without a branch (a missing one's `none` is written and not
   /// counted), and only third and later members loop. Heads are prefetched 8 cells ahead.
-  /// gather and gather_filtered stay out of line (6D, seven interleaved runs: inlined into
-  /// scan_horizon, median 82k against 88k collisions per second; and profiles name them).
+  /// gather and gather_filtered stay out of line: inlined they are slower
+  /// (docs/benchmarks.md, "Tried and rejected"), and profiles name them.
   template <bool records = true>
   [[gnu::noinline]] void gather(std::uint32_t i, const PBox* boxes = nullptr) {
     (void)boxes;
@@ -113,7 +113,6 @@ struct ScanState : State<D, F> {
     double* vv = rv + n;
     double* rr = vv + n;
     double* tt = rr + n;
-    if constexpr (F.radii) bases.resize(n);
     const Vec<D> xi = p.position(i), vi = p.velocity(i);
     const double shv[4] = {0.0, -L, L, 0.0};
     for (std::size_t c = 0; c < n; ++c) {
@@ -124,9 +123,8 @@ struct ScanState : State<D, F> {
           p.position(j) + p.velocity(j) * (now - p.local_time(j)) + shift - xi;
       const Vec<D> v = p.velocity(j) - vi;
       rv[c] = r.dot(v), vv[c] = v.squaredNorm(), rr[c] = r.squaredNorm();
-      if constexpr (F.radii) bases[c] = base_contact(i, j);
     }
-    contact_times(n, rv, vv, rr, F.radii ? bases.data() : nullptr, sc, rate, tt);
+    contact_times(n, rv, vv, rr, sc, rate, tt);
     for (std::size_t c = 0; c < n; ++c)
       if (tt[c] < top.t2) top.offer(tt[c], static_cast<std::int32_t>(cand[c].j));
     return top;

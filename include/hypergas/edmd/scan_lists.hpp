@@ -182,7 +182,6 @@ class ListScanner {
     double* vv = rv + n;
     double* rr = vv + n;
     double* tt = rr + n;
-    if constexpr (F.radii) s.bases.resize(n);
     const double now = s.now;
     for (std::uint32_t c = 0; c < n; ++c) {
       const std::uint32_t j = row[c];
@@ -190,9 +189,8 @@ class ListScanner {
       for (int k = 0; k < D; ++k) r[k] = nearest_image(r[k], L, hL);
       const Vec<D> v = s.p.velocity(j) - vi;
       rv[c] = r.dot(v), vv[c] = v.squaredNorm(), rr[c] = r.squaredNorm();
-      if constexpr (F.radii) s.bases[c] = s.base_contact(i, j);
     }
-    contact_times(n, rv, vv, rr, F.radii ? s.bases.data() : nullptr, sc, s.rate, tt);
+    contact_times(n, rv, vv, rr, sc, s.rate, tt);
     Top2 top;
     for (std::uint32_t c = 0; c < n; ++c)
       if (tt[c] < top.t2) top.offer(tt[c], static_cast<std::int32_t>(row[c]));

@@ -57,24 +57,15 @@ struct State {
     if constexpr (D >= 2) check_packing(D, cfg.packing);
     else if (!(cfg.packing > 0.0 && cfg.packing < 1.0))
       throw InvalidInput("1D packing fraction must be in (0, 1)");
-    if (!(cfg.size_ratio > 0.0 && std::isfinite(cfg.size_ratio)))
-      throw InvalidInput("size ratio must be finite and > 0");
     const std::size_t n = cfg.n;
     p.resize(n);
     Rng rng(cfg.seed, 0);
     Rng vrng = rng.split(1);
     initialize_velocities(p, cfg.init, vrng, cfg.initial);
-    double vol = 0.0;
-    const std::size_t n1 = static_cast<std::size_t>(
-        std::llround(cfg.initial.fraction * static_cast<double>(n)));
-    for (std::size_t i = 0; i < n; ++i) {
-      if constexpr (F.radii) p.set_radius(i, i < n - n1 ? 0.5 : 0.5 * cfg.size_ratio);
-      vol += ball_volume(D, base_contact(i, i));
-    }
-    (void)n1;
+    double vol = 0.0;  // volume of the spheres at unit scale
+    for (std::size_t i = 0; i < n; ++i) vol += ball_volume(D, base_contact(i, i));
     L = std::pow(vol / cfg.packing, 1.0 / D);
-    max_base = 0.0;
-    for (std::size_t i = 0; i < n; ++i) max_base = std::max(max_base, base_contact(i, i));
+    max_base = 1.0;
     Rng lrng = rng.split(2);
     const LatticeSites<D> sites = lattice_sites<D>(n, L, lrng);
     for (std::size_t i = 0; i < n; ++i) p.position(i) = sites.x[i];
@@ -109,14 +100,8 @@ struct State {
   std::size_t size() const { return p.size(); }
   /// Current diameter scale (1 after compression).
   double diameter_scale() const { return scale_ref + rate * (now - t_scale); }
-  /// Contact distance of i and j at unit scale (sum of radii; 1 without radii).
-  double base_contact(std::size_t i, std::size_t j) const {
-    if constexpr (F.radii) return p.radius(i) + p.radius(j);
-    else {
-      (void)i, (void)j;
-      return 1.0;
-    }
-  }
+  /// Contact distance of i and j at unit scale: the diameter, 1.
+  double base_contact(std::size_t, std::size_t) const { return 1.0; }
   double contact(std::size_t i, std::size_t j) const {
     return base_contact(i, j) * diameter_scale();
   }

@@ -5,9 +5,9 @@
 // frame f, particle i, component k at data[(f * n + i) * dim + k]. Averages run over all
 // particles and all time origins t0 = 0 .. frames-1-lag:
 //   vacf(lag) = < v(t0) . v(t0 + lag) >,   msd(lag) = < |r(t0 + lag) - r(t0)|^2 >.
-// The FFT versions (FFTW, real-to-complex, zero-padded to >= 2 frames so that the circular
-// correlation equals the linear one; Wiener–Khinchin) cost O(n D L log L); the direct
-// versions O(n D L^2) are the reference they are tested against. All are thread-safe.
+// By FFT (FFTW, real-to-complex, zero-padded to >= 2 frames so that the circular
+// correlation equals the linear one; Wiener–Khinchin): O(n D L log L). The tests check them
+// against the direct double sums (tests/support/correlation.hpp). All are thread-safe.
 #pragma once
 
 #include <cstddef>
@@ -21,17 +21,9 @@ namespace hypergas::analysis {
 std::vector<double> vacf(const std::vector<double>& velocities, std::size_t frames, std::size_t n,
                          int dim, std::size_t max_lag);
 
-/// Same as vacf() by the direct double sum (reference; slow for long series). velocity^2.
-std::vector<double> vacf_direct(const std::vector<double>& velocities, std::size_t frames,
-                                std::size_t n, int dim, std::size_t max_lag);
-
 /// MSD for lags 0 .. max_lag from unwrapped positions, by FFT. length^2.
 std::vector<double> msd(const std::vector<double>& positions, std::size_t frames, std::size_t n,
                         int dim, std::size_t max_lag);
-
-/// Same as msd() by the direct double sum (reference). length^2.
-std::vector<double> msd_direct(const std::vector<double>& positions, std::size_t frames,
-                               std::size_t n, int dim, std::size_t max_lag);
 
 /// Green–Kubo self-diffusion coefficient (1/D) integral_0^(max_lag dt) vacf(t) dt by the
 /// trapezoid rule; dt is the frame spacing (time). length^2 / time.

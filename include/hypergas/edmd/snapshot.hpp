@@ -1,0 +1,65 @@
+// hypergas/edmd/snapshot.hpp -- the EDMD state as an observer sees it: a Snapshot at one
+// instant in the original numbering of the particles.
+//
+// The engine renumbers its particles from time to time (Engine::reorder) and lets each
+// particle's record lag behind at its own clock; a snapshot undoes both. It builds one
+// buffer of [unwrapped position, velocity] records (2 D doubles per particle) in the
+// original numbering and, for mixtures, the species in the same order, and reads the
+// particle store without copying it.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "hypergas/edmd/state.hpp"
+#include "hypergas/observer.hpp"
+#include "hypergas/particles.hpp"
+
+namespace hypergas::edmd {
+
+/// Calls obs with the state `s` at time ts (>= every local clock), in the original
+/// numbering (State::slot), positions unwrapped by the periodic image counts. Changes
+/// nothing.
+template <int D, Features F>
+void observe_state(const State<D, F>& s, double ts, Observer& obs) {
+  const std::size_t n = s.size();
+  constexpr int st = 2 * D;
+  std::vector<double> rec(n * st);
+  for (std::size_t a = 0; a < n; ++a) {  // a: original id, i: its current slot
+    const std::size_t i = s.slot[a];
+    for (int k = 0; k < D; ++k) {
+      rec[a * st + k] = s.p.position(i)[k] + s.p.velocity(i)[k] * (ts - s.p.local_time(i)) +
+                        s.L * s.image[i * D + k];
+      rec[a * st + D + k] = s.p.velocity(i)[k];
+    }
+  }
+  Snapshot snap;
+  snap.dim = D;
+  snap.n = n;
+  snap.stride = st;
+  snap.velocities = rec.data() + D;
+  snap.positions = rec.data();
+  snap.time = ts;
+  snap.collisions = s.ncoll;
+  snap.collisions_per_particle = 2.0 * static_cast<double>(s.ncoll) / static_cast<double>(n);
+  std::vector<std::uint8_t> species;
+  std::array<double, max_species> species_w{};
+  if constexpr (F.species) {
+    species.resize(n);
+    int ns = 1;
+    for (std::size_t a = 0; a < n; ++a) {
+      species[a] = static_cast<std::uint8_t>(s.p.species(s.slot[a]));
+      ns = std::max(ns, species[a] + 1);
+    }
+    for (int k = 0; k < max_species; ++k) species_w[k] = s.p.species_inv_mass(k);
+    snap.species = species.data();
+    snap.species_inv_mass = species_w.data();
+    snap.n_species = ns;
+  }
+  obs.observe(snap);
+}
+
+}  // namespace hypergas::edmd

@@ -11,8 +11,8 @@
 // scattering direction from the following ones. The rare event that needs more than 16
 // words (a long run of rejections) continues in a second sequence at a hashed start.
 //
-// Philox4x32-10 (Random123) was measured in its place: the one-thread engine ran at 63 % of
-// its rate with it (docs/benchmarks.md, "tried and rejected").
+// SplitMix64 rather than a stronger counter-based generator such as Philox4x32-10: it is the
+// cheaper of the two per word (docs/benchmarks.md, "Tried and rejected").
 #pragma once
 
 #include <cstdint>

@@ -8,10 +8,10 @@
 //     ... phase 2 ...
 //   });                            // returns when all four have returned
 //
-// A barrier spins for at most 0.2 ms (phases of the DSMC engine last tens of microseconds
-// and waking a sleeping thread costs about as much) and then sleeps in std::atomic::wait;
-// with more threads than cores it sleeps at once. Between runs the
-// workers sleep. The function must not throw.
+// A barrier spins for at most 50 microseconds, because waking a sleeping thread costs
+// about as long as a phase of the DSMC engine (docs/benchmarks.md, "One system on T
+// threads"), and then sleeps in std::atomic::wait; with more threads than cores it sleeps at
+// once. Between runs the workers sleep. The function must not throw.
 #pragma once
 
 #include <atomic>

@@ -9,13 +9,9 @@
 // O(1). When the year is used up, the calendar is rebuilt from all entries with a new base
 // (the earliest time) and a new width: w = 4 <t - t_min> / N, so that a few entries share a
 // bucket near the front and a year spans ~4 mean event horizons (the overflow is the tail
-// beyond that). The rebuild is O(N) work once per ~4N events. Width factors 1, 2, 4, 8 were
-// measured (3D, eta = 0.26, N = 1e6): 4 was fastest, 8 slowest.
-//
-// An EDMD event costs O(neighbours) with this queue, O(neighbours + log N) with an indexed
-// binary heap. Measured at 3D, eta = 0.26: equal speed at N <= 256000, the calendar queue
-// 1.05-1.3x the heap at N = 1e6 on a 32 MB L3, equal where the L3 holds it all; the engine
-// uses the calendar queue only.
+// beyond that). The rebuild is O(N) work once per ~4N events. The factor 4 and the choice
+// of this queue over an indexed binary heap (O(neighbours + log N) per EDMD event instead
+// of O(neighbours)) are measured in docs/benchmarks.md.
 //
 // Event times handed in are never earlier than the current top (EDMD schedules events at or
 // after `now`); a time that rounds into an earlier bucket is filed in the current one.

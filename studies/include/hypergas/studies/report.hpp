@@ -27,13 +27,12 @@
 //                    rods only exchange velocities: the gas is N free points in the free
 //                    length L - N sigma (integrable), the collision count of a window is
 //                    fixed up to end effects, which add a 1/T term: the error falls at
-//                    least as fast as T^(-1/2) (slopes -0.6 to -0.8 measured);
+//                    least as fast as T^(-1/2) (docs/benchmarks.md);
 //                 2D disks, eta = 0.3: Henderson's Z = (1 + eta^2/8)/(1 - eta)^2 (Mol. Phys.
 //                    30, 971 (1975); ~2e-3 from simulation);
 //                 3D, eta = 0.2618: Carnahan-Starling (J. Chem. Phys. 51, 635 (1969); within
-//                    ~1e-3 of simulation here). At N = 1000 this code gives Z = 3.270-3.274
-//                    (six runs of 50 time units, se 0.0015), at N = 1e6 3.2686, against CS
-//                    3.2624: a floor of ~3e-3 from the finite-N bias plus CS's own error;
+//                    ~1e-3 of simulation); CS = 3.2624: a floor from the finite-N bias
+//                    plus CS's own error (the measured Z: docs/benchmarks.md);
 //                 4D, x = B2 rho = 0.2 (eta = 0.025): the virial series 1 + x + (B3/B2^2) x^2,
 //                    B3/B2^2 = 4/3 - 3 sqrt(3)/(2 pi) (Luban & Baram, J. Chem. Phys. 76, 3233
 //                    (1982)); truncation < 0.0027 (Clisby & McCoy, J. Stat. Phys. 122, 15
@@ -58,7 +57,7 @@ namespace hypergas::studies {
 /// What `run_report` computes and where it writes.
 struct ReportOptions {
   std::string out = "report";  ///< output folder (created if missing; files replaced)
-  bool quick = false;          ///< ~20 s instead of ~5 min: fewer points and replicas
+  bool quick = false;          ///< fewer points and replicas (run times: docs/benchmarks.md)
   std::uint64_t seed = 1;      ///< all randomness derives from it
   int threads = 2;             ///< replicas run on this many threads (1..64)
   bool plot = true;            ///< run gnuplot (if on PATH) to write work_precision.png

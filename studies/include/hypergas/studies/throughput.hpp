@@ -85,10 +85,10 @@ std::vector<std::string_view> edmd_scan_names();
 /// outside 1..6 or an unknown scan.
 void run_edmd_bench(const EdmdCase& c, std::ostream& out);
 
-/// The default cases: 3D at eta = 0.26 for N = 4000, 32000, 256000 (DynamO anchors 125-145k,
-/// 115-126k, 51-68k collisions/s) and 6D at N = 32000, eta = 0.05 (6D jams at 0.20; at
-/// eta = 0.1 the D_6 lattice of 32000 sites is too tight and the Lubachevsky-Stillinger
-/// compression that fixes it takes minutes at the present 6D rate), 2e5 timed collisions.
+/// The default cases: 3D at eta = 0.26 for N = 4000, 32000, 256000 (the sizes of the DynamO
+/// anchors, docs/benchmarks.md) and 6D at N = 32000, eta = 0.05 (6D jams at 0.20; at
+/// eta = 0.1 the D_6 lattice of 32000 sites is too tight and needs the slow
+/// Lubachevsky-Stillinger compression first), 2e5 timed collisions.
 std::vector<EdmdCase> default_edmd_cases();
 
 }  // namespace hypergas::studies

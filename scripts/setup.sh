@@ -1,18 +1,23 @@
 #!/usr/bin/env bash
 # Sets up hypergas from nothing on Debian 12: installs the Debian packages it needs (only
 # those missing; non-interactive; as root or through sudo), then configures and builds a
-# Release build in ./build: the `hypergas` command (what the default scene needs) and the
-# Python module (build/python/hypergas), or with --all everything (tests, examples,
-# benchmarks). Idempotent: a second run installs
-# nothing and rebuilds only what changed. Other arguments are passed to the CMake
-# configure step.
+# Release build in ./build.
+#   (no argument)  the `hypergas` command only: what the default scene needs
+#   --python       also the Python module (build/python/hypergas) and its packages
+#   --all          everything: the module, tests, examples and benchmarks
+# Idempotent: a second run installs nothing and rebuilds only what changed. Other arguments
+# are passed to the CMake configure step.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-targets=(--target hypergas_cli)  # + hypergas_python when configured (below)
+level=cli
 args=()
 for a in "$@"; do
-  if [ "$a" = "--all" ]; then targets=(); else args+=("$a"); fi
+  case "$a" in
+    --all) level=all ;;
+    --python) [ "$level" = all ] || level=python ;;
+    *) args+=("$a") ;;
+  esac
 done
 
 packages=(
@@ -20,12 +25,26 @@ packages=(
   libeigen3-dev                          # vectors (core)
   libpcg-cpp-dev                         # PCG random streams (core)
   libgsl-dev libfftw3-dev                # analysis: statistics, fits, FFT
-  catch2                                 # tests
   libcli11-dev libfmt-dev                # the command: options and output
   gnuplot-nox                            # PNG plots
+)
+python_packages=(
   python3-dev pybind11-dev python3-numpy # the Python module
   python3-matplotlib python3-pytest python3-tqdm  # its example, tests and progress bar
 )
+case "$level" in
+  cli)
+    targets=(--target hypergas_cli)
+    config=(-DHYPERGAS_BUILD_TESTS=OFF -DHYPERGAS_PYTHON=OFF) ;;
+  python)
+    packages+=("${python_packages[@]}")
+    targets=(--target hypergas_cli --target hypergas_python)
+    config=(-DHYPERGAS_BUILD_TESTS=OFF -DHYPERGAS_PYTHON=ON) ;;
+  all)
+    packages+=(catch2 "${python_packages[@]}")
+    targets=()
+    config=(-DHYPERGAS_BUILD_TESTS=ON -DHYPERGAS_PYTHON=AUTO) ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do
@@ -44,8 +63,5 @@ if ((${#missing[@]})); then
 fi
 
 jobs=$(nproc 2>/dev/null || echo 2)
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release ${args[@]+"${args[@]}"} >&2
-if ((${#targets[@]})) && cmake --build build --target help | grep hypergas_python >/dev/null; then
-  targets+=(hypergas_python)
-fi
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${config[@]}" ${args[@]+"${args[@]}"} >&2
 cmake --build build -j "$jobs" ${targets[@]+"${targets[@]}"} >&2

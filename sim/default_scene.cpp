@@ -52,8 +52,7 @@ double first_crossing(const std::vector<double>& x, const std::vector<double>& y
 }
 
 RunOptions scene_run(const SceneOptions& s, int d) {
-  RunOptions o;
-  o.engine = registry::name(registry::EngineKind::dsmc);
+  RunOptions o = options::defaults(registry::EngineKind::dsmc);
   o.dim = d;
   o.model = dsmc::HardSpheres::name;
   o.init = registry::name(InitialState::delta);

@@ -70,16 +70,12 @@ void save_run(checkpoint::Writer& w, const RunOptions& o, const DriverState& st,
   w(st, c0, rec..., e);
 }
 
-/// DSMC (time in equilibrium mean collision times), default until 10.
+/// DSMC (time in equilibrium mean collision times).
 RunRecord simulate_dsmc(const RunOptions& o, bool progress, RunContext& ctx);
 
-/// EDMD (sigma = m = kT = 1), default until 20. The first fifth of [0, until] equilibrates
+/// EDMD (sigma = m = kT = 1). The first fifth of [0, until] equilibrates
 /// the lattice start without sampling; moments, VACF, Z and rates come from the rest.
 RunRecord simulate_edmd(const RunOptions& o, bool progress, RunContext& ctx);
-
-/// The sampling interval actually used: `every` shrunk so that `span` is a whole number
-/// of intervals (span / 50 when every <= 0).
-double sampling_interval(double span, double every);
 
 /// The value of `key` in `o` as text (doubles with 4 significant digits); "-" if absent.
 std::string summary_field(const analysis::JsonObject& o, const std::string& key);

@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
   add_number(app, "--until", scene.until,
              "default scene: end time in equilibrium mean collision times, > 0");
 
-  RunOptions run;
+  RunArgs run;
   CLI::App* run_app = app.add_subcommand("run", "run one simulation and write its files to --out");
   add_run_options(*run_app, run);
 
@@ -76,9 +76,7 @@ int main(int argc, char** argv) {
   install_interrupt_handler();
   try {
     if (run_app->parsed()) {
-      record_given(*run_app, run);
-      validate(run);
-      return run_command(run);
+      return run_command(run_options(run));
     }
     if (bench_app->parsed()) {
       validate(bench);

@@ -42,9 +42,9 @@ int resume_command(const ResumeOptions& r) {
     in.fail(fmt::format("written by '{}', this is '{}'; only the same build continues a run "
                         "bit for bit",
                         id, build_identity()));
-  RunOptions o;
+  RunArgs a;
   CLI::App app{"hypergas run (from a checkpoint)"};
-  add_run_options(app, o);
+  add_run_options(app, a);
   args.push_back("--out");
   args.push_back(r.dir);
   try {
@@ -53,8 +53,7 @@ int resume_command(const ResumeOptions& r) {
   } catch (const CLI::ParseError& e) {
     in.fail(fmt::format("its run options do not parse: {}", e.what()));
   }
-  record_given(app, o);
-  validate(o);
+  RunOptions o = run_options(a);
   o.json = r.json;
   return run_command(o, &in);
 }

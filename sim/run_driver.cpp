@@ -11,16 +11,12 @@ namespace hypergas::cli {
 
 std::optional<Stop> RunPlan::stop(std::uint64_t k) const {
   const auto w = static_cast<std::uint64_t>(warmup_stops);
+  const double t0 = sampling.t0();
   if (k + 1 < w) return Stop{t0 * static_cast<double>(k + 1) / warmup_stops, false, false};
   if (k + 1 == w) return Stop{t0, true, true};
   const std::uint64_t m = w > 0 ? k - w + 1 : k;
-  double t = t0 + static_cast<double>(m) * every;
-  if (t > until) {
-    if (!clamp_last || t - until > 1e-9 * every) return std::nullopt;
-    t = until;
-  }
-  // A clamped stop at `until` is the last: the next grid point is beyond the tolerance.
-  return Stop{t, false, true};
+  if (m > sampling.intervals()) return std::nullopt;
+  return Stop{sampling.time(m), false, true};
 }
 
 Checkpointer::Checkpointer(std::filesystem::path dir, double every, double wall_s)
@@ -34,37 +30,6 @@ bool Checkpointer::due(double t, const DriverState& st) const {
     if (since >= wall_s_) return true;
   }
   return false;
-}
-
-namespace {
-std::string num(double x) { return fmt::format("{:.17g}", x); }
-}  // namespace
-
-std::vector<std::string> run_arguments(const RunOptions& o) {
-  const bool edmd = o.engine_kind() == registry::EngineKind::edmd;
-  std::vector<std::string> a = {"--engine", o.engine, "--dim", std::to_string(o.dim),
-                                "--n", std::to_string(o.n), "--seed", std::to_string(o.seed)};
-  const auto add = [&](const char* name, std::string value) {
-    a.emplace_back(name);
-    a.push_back(std::move(value));
-  };
-  if (!o.init.empty()) add("--init", o.init);
-  if (o.until > 0.0) add("--until", num(o.until));
-  if (o.every > 0.0) add("--every", num(o.every));
-  add("--mass-ratio", num(o.mass_ratio));
-  add("--fraction", num(o.fraction));
-  if (edmd) {
-    add("--packing", num(o.packing));
-    if (o.start_packing > 0.0) add("--start-packing", num(o.start_packing));
-  } else {
-    add("--model", o.model);
-    if (o.model == dsmc::VariableHardSpheres::name) add("--vhs-exponent", num(o.vhs_exponent));
-    add("--temperature", num(o.temperature));
-    add("--threads", std::to_string(o.threads));
-  }
-  if (o.checkpoint_every > 0.0) add("--checkpoint-every", num(o.checkpoint_every));
-  if (!o.checkpoint_wall.empty()) add("--checkpoint-wall", o.checkpoint_wall);
-  return a;
 }
 
 std::string build_identity() {
@@ -82,7 +47,7 @@ std::string build_identity() {
 
 void save_header(checkpoint::Writer& w, const RunOptions& o) {
   w.tag("hypergas-run");
-  w(build_identity(), run_arguments(o));
+  w(build_identity(), options::replay_arguments(o));
 }
 
 double peak_rss_bytes() {

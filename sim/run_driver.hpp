@@ -2,11 +2,11 @@
 // stop to stop, observes at the sampling stops, writes checkpoints and honours Ctrl-C.
 //
 // A run is a fixed sequence of stops, a pure function of the options (RunPlan::stop(k)):
-//   DSMC  the sampling grid t = k every, k = 0, 1, ...; a grid point within 1e-9 every above
-//         `until` is taken at `until` (the rule of dsmc::Engine::run_until).
+//   DSMC  the sampling instants of hypergas::Schedule from 0 to `until` (the rule of both
+//         engines' run_until and of Python's run: evenly spaced, the last at `until`).
 //   EDMD  ten equilibration stops at t_eq (k + 1) / 10 without sampling, the last of which
-//         (t_eq) starts the measurement window and takes the first sample; then the grid
-//         t_eq + m every <= until (the rule of edmd::Engine::run_until).
+//         (t_eq) starts the measurement window and takes the first sample; then the
+//         Schedule's instants from t_eq to `until`.
 // Stopping an engine at a time and going on does not change its trajectory where the plan
 // puts the stops: DSMC stops only at its sampling grid (an epoch of the exact scheme ends at
 // each grid point in any case); EDMD processes the same events in the same order whatever
@@ -24,6 +24,7 @@
 
 #include "hypergas/checkpoint.hpp"
 #include "hypergas/observer.hpp"
+#include "hypergas/schedule.hpp"
 #include "options.hpp"
 #include "progress.hpp"
 
@@ -39,11 +40,8 @@ struct Stop {
 
 /// The stops of a run (see the file comment).
 struct RunPlan {
-  double until = 0.0;        ///< end time
-  double every = 0.0;        ///< sampling interval
-  double t0 = 0.0;           ///< time of the first sample
+  Schedule sampling;         ///< the sampled instants, sampling.t0() .. sampling.until()
   int warmup_stops = 0;      ///< EDMD: equilibration stops (the last one samples), DSMC: 0
-  bool clamp_last = false;   ///< DSMC: a grid point just above `until` is taken at `until`
 
   /// Stop k, or nothing after the last one.
   std::optional<Stop> stop(std::uint64_t k) const;
@@ -135,18 +133,15 @@ void drive(Engine& engine, const RunPlan& plan, DriverState& st, Observer& obs,
     }
   }
   const auto t0 = Clock::now();
-  engine.run_until(plan.until);
+  engine.run_until(plan.sampling.until());
   st.engine_s += std::chrono::duration<double>(Clock::now() - t0).count();
 }
-
-/// The run's options as `hypergas run` arguments (every option that applies to its engine,
-/// numbers in round-trip precision, no --out): what a checkpoint stores and resume parses.
-std::vector<std::string> run_arguments(const RunOptions& o);
 
 /// "hypergas <version> (<compiler>)": a checkpoint is continued only by the same build.
 std::string build_identity();
 
-/// Writes the run's header: section "hypergas-run", build_identity(), run_arguments(o).
+/// Writes the run's header: section "hypergas-run", build_identity(), and the options that
+/// resume parses again (options::replay_arguments).
 void save_header(checkpoint::Writer& w, const RunOptions& o);
 
 /// Peak resident memory of this process so far (bytes; getrusage).

@@ -21,12 +21,6 @@
 
 namespace hypergas::cli {
 
-double sampling_interval(double span, double every) {
-  if (!(every > 0.0)) return span / 50.0;
-  const double k = std::max(1.0, std::round(span / every));
-  return span / k;
-}
-
 RunRecord simulate(const RunOptions& o, bool progress, RunContext& ctx) {
   if (o.engine_kind() == registry::EngineKind::edmd) return simulate_edmd(o, progress, ctx);
   return simulate_dsmc(o, progress, ctx);
@@ -74,10 +68,9 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
   using Engine = dsmc::Engine<D, Model, F>;
   static_assert(SimulationEngine<Engine>);
   using Clock = std::chrono::steady_clock;
-  const double until = o.until > 0.0 ? o.until : 10.0;
-  const double every = sampling_interval(until, o.every);
-  const RunPlan plan{.until = until, .every = every, .t0 = 0.0, .warmup_stops = 0,
-                     .clamp_last = true};
+  const double until = o.until;
+  const RunPlan plan{.sampling = o.schedule(0.0), .warmup_stops = 0};
+  const double every = plan.sampling.every();
   const int k = o.replicas;
 
   std::vector<RunRecord> recs(static_cast<std::size_t>(k));

@@ -28,11 +28,10 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress, RunCo
   using Engine = edmd::Engine<D, F, Scan>;
   static_assert(SimulationEngine<Engine>);
   using Clock = std::chrono::steady_clock;
-  const double until = o.until > 0.0 ? o.until : 20.0;
+  const double until = o.until;
   const double t_eq = equilibration_fraction * until;
-  const double every = sampling_interval(until - t_eq, o.every);
-  const RunPlan plan{.until = until, .every = every, .t0 = t_eq,
-                     .warmup_stops = equilibration_stops, .clamp_last = false};
+  const RunPlan plan{.sampling = o.schedule(t_eq), .warmup_stops = equilibration_stops};
+  const double every = plan.sampling.every();
 
   const auto t0 = Clock::now();
   RunRecord rec;

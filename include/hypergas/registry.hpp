@@ -36,6 +36,7 @@
 
 #include "hypergas/dsmc/config.hpp"
 #include "hypergas/dsmc/models.hpp"
+#include "hypergas/edmd/config.hpp"
 #include "hypergas/edmd/scan.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/initial_state.hpp"
@@ -105,10 +106,10 @@ inline constexpr std::array<Entry<EngineKind>, 2> engines = {{
     {EngineKind::edmd, "edmd", "event-driven hard-sphere MD in a periodic box"},
 }};
 
-/// The initial state an engine starts from when none is named: DSMC relaxes from the delta
-/// shell, EDMD melts its lattice from Maxwell-Boltzmann velocities.
-constexpr InitialState default_initial_state(EngineKind e) {
-  return e == EngineKind::dsmc ? InitialState::delta : InitialState::maxwell;
+/// The initial state an engine starts from when none is named, its Config's default: DSMC
+/// relaxes from the delta shell, EDMD melts its lattice from Maxwell-Boltzmann velocities.
+inline InitialState default_initial_state(EngineKind e) {
+  return e == EngineKind::dsmc ? dsmc::Config{}.init : edmd::Config{}.init;
 }
 
 /// The initial velocity states (initial_state.hpp), for both engines.

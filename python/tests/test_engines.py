@@ -296,7 +296,7 @@ def test_from_velocities_bad_input():
         (v + 1.0, "total momentum must be zero"),
         (np.zeros((100, 3)), "must not all be zero"),
         (np.full((100, 3), np.nan), "finite"),
-        (v[:1], "n must be at least 2"),
+        (v[:1], "n must be a number of particles in 2..2^31"),
         (np.zeros((10, 7)), "dim must be a dimension in 1..6"),
         (v[:, 0], "shape (n, dim)"),
     ]:

@@ -71,6 +71,7 @@ EqRuns equilibrium_runs(std::size_t N, const std::vector<double>& Ts, int R, std
   for_each_replica(R, threads, [&](int r) {
     dsmc::Config cfg;
     cfg.n = N;
+    cfg.init = InitialState::maxwell;
     cfg.initial.mass_ratio = 3.0;
     cfg.seed = replica_seed(seed, r);
     dsmc::Engine<D, dsmc::HardSpheres, F> e(cfg);

@@ -20,10 +20,10 @@ TEST_CASE("hypergas run --help lists every option with unit and default", "[cli]
   INFO(r.out);
   // Each contract option, followed by the text its line must carry (default or unit).
   const std::vector<std::pair<std::string, std::string>> expected{
-      {"--engine", "=dsmc"},          {"--dim", "=3"},
+      {"--engine", "default dsmc"},   {"--dim", "=3"},
       {"--n", "=10000"},              {"--out", "REQUIRED"},
       {"--json", "last stdout line"}, {"--model", "=hs"},
-      {"--init", "default"},          {"--until", "mean collision times (default 10)"},
+      {"--init", "default"},          {"--until", "mean collision times; edmd: sigma sqrt(m/kT)] (default 10 for dsmc, 20 for edmd)"},
       {"--every", "default until/50"}, {"--packing", "=0.1"},
       {"--mass-ratio", "=1"},         {"--fraction", "=0.5"},
       {"--seed", "=1"},               {"--threads", "=1"},

@@ -22,6 +22,7 @@ TEMPLATE_TEST_CASE_SIG("DSMC with N = 2: constant speeds, Poisson collision coun
   constexpr Features F{.species = (D == 1)};  // 1D: masses 1 and 3 (equal masses only swap)
   Config cfg;
   cfg.n = 2;
+  cfg.init = InitialState::maxwell;
   cfg.initial.mass_ratio = 3.0;
   cfg.seed = 11 + D;
   // The initial states give each species zero momentum, which one particle cannot have with

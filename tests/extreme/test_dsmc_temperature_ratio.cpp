@@ -80,6 +80,7 @@ TEST_CASE("DSMC: N = 2, tiny and huge velocity scales", "[dsmc][extreme]") {
   for (double s : {1e-150, 1.0, 1e150}) {
     Config cfg;
     cfg.n = 2;
+    cfg.init = InitialState::maxwell;
     cfg.initial.kT = s * s;
     Engine<4, HardSpheres> e(cfg);
     const double v0 = e.particles().velocity(0).norm();

@@ -35,6 +35,7 @@ TEST_CASE("DSMC with 1e7 particles in 3D", "[dsmc][extreme][long]") {
   reset_peak_rss();
   dsmc::Config cfg;
   cfg.n = 10000000;
+  cfg.init = InitialState::maxwell;
   cfg.seed = 99;
   dsmc::Engine<3, dsmc::HardSpheres> e(cfg);
   const auto c0 = conserved(e.particles());

@@ -19,13 +19,15 @@ enum class Scheme { exact, ntc };
 /// the mass of species 0 equal to 1. Two species: set `initial.mass_ratio` (m1/m0),
 /// `initial.fraction` (number fraction of species 1) and, for different initial temperatures,
 /// `init = two_temp` with `initial.kT_species`; the engine needs Features{.species = true}.
+/// These defaults are those of `hypergas run --engine dsmc` and `hypergas.DSMC` (the option
+/// table, options/src/table.cpp, reads them from here).
 struct Config {
-  std::size_t n = 100000;                     ///< number of particles (2 .. 2^32 - 1)
+  std::size_t n = 10000;                      ///< number of particles (2 .. 2^32 - 1)
   double vhs_exponent = 0.5;                  ///< a in the VHS rate |g|^a, 0 <= a <= 1
   Scheme scheme = Scheme::exact;              ///< exact Kac process or NTC
   double dt = 0.01;                           ///< NTC time step (mean collision times)
   std::uint64_t seed = 1;                     ///< all randomness derives from it
-  InitialState init = InitialState::maxwell;  ///< initial velocity state
+  InitialState init = InitialState::delta;    ///< initial velocity state
   InitialParams initial;                      ///< kT, per-species kT, fraction, mass ratio, ...
 };
 

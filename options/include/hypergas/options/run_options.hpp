@@ -1,0 +1,91 @@
+// hypergas/options/run_options.hpp -- the options of one run, as plain data: what `hypergas
+// run` parses, what `hypergas.DSMC`/`hypergas.EDMD` take as keywords, what a checkpoint
+// replays. Their names, types, ranges, defaults, units and help live in one table
+// (table.hpp); this header holds the values and the checks that involve several options.
+//
+// Units: DSMC time in equilibrium mean collision times, EDMD time in sigma sqrt(m/kT) with
+// sigma = m = kT = 1.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hypergas/dsmc/config.hpp"
+#include "hypergas/edmd/config.hpp"
+#include "hypergas/registry.hpp"
+#include "hypergas/schedule.hpp"
+
+namespace hypergas::options {
+
+/// The values of the run options (table.hpp names each). A valid object comes from
+/// defaults(engine) and set_* (table.hpp), then validate().
+struct RunOptions {
+  std::string engine;          ///< registry::engines
+  int dim = 0;                 ///< D, 1..6
+  long long n = 0;             ///< particles (signed so that negative input is caught)
+  std::string out;             ///< output folder of the command
+  bool json = false;           ///< the command prints summary.json's object last
+  std::string model;           ///< DSMC collision model (registry::Models)
+  double vhs_exponent = 0.0;   ///< VHS rate exponent a (rate ~ |g|^a)
+  std::string init;            ///< initial state name (registry::initial_states)
+  double until = 0.0;          ///< end time
+  double every = 0.0;          ///< requested sampling interval (0: not given; Schedule)
+  double packing = 0.0;        ///< EDMD packing fraction eta
+  double start_packing = 0.0;  ///< EDMD lattice start packing, compressed to eta (0: eta)
+  double mass_ratio = 0.0;     ///< m2 / m1 of a two-mass gas (1 = one species)
+  double fraction = 0.0;       ///< number fraction of the heavy species
+  double temperature = 0.0;    ///< initial kT (DSMC; EDMD fixes kT = 1)
+  std::uint64_t seed = 0;      ///< random seed
+  int threads = 0;             ///< DSMC: threads of the one system (same result for any)
+  int replicas = 0;            ///< DSMC: independent copies (seeds derived from seed)
+  double checkpoint_every = 0.0;  ///< checkpoint every this much engine time (0 = off)
+  std::string checkpoint_wall;    ///< checkpoint every this much wall time ("90s", "10min")
+  std::vector<std::string> given;  ///< options set explicitly, as "--name", in order
+
+  /// Whether option `name` ("--packing") was set explicitly.
+  bool was_given(const std::string& name) const;
+  /// --checkpoint-wall in seconds (0 if not given).
+  double checkpoint_wall_seconds() const;
+  registry::EngineKind engine_kind() const;
+  InitialState initial_state() const;
+  /// The sampling instants of the run from t0 (0 for DSMC; EDMD: the end of equilibration).
+  Schedule schedule(double t0) const { return Schedule::make(t0, until, every); }
+};
+
+/// Checks what involves more than one option (each option's own range is checked when it is
+/// set): the other engine's options, --vhs-exponent without --model vhs, the sampling
+/// schedule, checkpoints with replicas, the packing against jamming in D, --start-packing
+/// against --packing, the memory the state needs. Throws InvalidInput naming the options.
+void validate(const RunOptions& o);
+
+/// The engine configurations that valid options describe.
+dsmc::Config dsmc_config(const RunOptions& o);
+edmd::Config edmd_config(const RunOptions& o);
+/// Whether the run has two species (mass_ratio != 1): the engines' Features::species.
+bool two_species(const RunOptions& o);
+
+/// Largest packing fraction (exclusive) an EDMD run may ask for in D dimensions: the
+/// jamming density of edmd::jamming_packing (1, 0.82, 0.64, 0.46, 0.31, 0.20 for D = 1..6).
+double jamming_packing(int dim);
+
+/// Shared single-option checks (also used by `bench`, `report` and the Python recorders):
+/// throw InvalidInput naming `option`.
+void check_dim(int d, const std::string& option);
+void check_n(long long n, const std::string& option);
+void check_threads(long long t, const std::string& option);
+void check_start_packing(double start, double packing);
+
+/// Parses the whole of `text` as a T for `option`, or throws InvalidInput naming the option
+/// and the text: doubles in decimal or scientific notation (nan and inf parse; ranges refuse
+/// them); signed integers also as an exact integer in scientific notation (1e6); unsigned
+/// integers (seeds) as plain digits. Trailing characters (10x), hexadecimal and empty text
+/// are refused.
+template <class T>
+T parse_number(const std::string& option, const std::string& text);
+
+/// Parses a wall-clock duration "<number>[s|min|h]" (no unit: seconds) to seconds; throws
+/// InvalidInput unless it is finite, > 0 and at most 1e9 s.
+double parse_duration(const std::string& option, const std::string& text);
+
+}  // namespace hypergas::options

@@ -1,0 +1,261 @@
+// options/src/table.cpp -- the run options (the one table), their defaults, and setting and
+// printing a value by its entry.
+#include "hypergas/options/table.hpp"
+
+#include <array>
+#include <cmath>
+#include <fmt/core.h>
+#include <fmt/ranges.h>
+
+#include "hypergas/error.hpp"
+
+namespace hypergas::options {
+
+namespace {
+
+using E = Engines;
+using U = Use;
+using R = RunOptions;
+
+constexpr std::string_view time_unit =
+    "dsmc: equilibrium mean collision times; edmd: sigma sqrt(m/kT)";
+
+void check_engine(std::string_view v) { (void)registry::engine(v); }
+void check_model(std::string_view v) { (void)registry::model(v); }
+void check_init(std::string_view v) { (void)registry::initial_state(v); }
+void check_duration(std::string_view v) { (void)parse_duration("--checkpoint-wall", std::string(v)); }
+std::string engines_help() { return registry::describe(registry::engines); }
+std::string models_help() { return registry::describe_models(); }
+std::string inits_help() {
+  return registry::describe(registry::initial_states) +
+         " (see include/hypergas/initial_state.hpp)";
+}
+std::string jamming_help() {
+  std::vector<double> v;
+  for (int d = min_dim; d <= max_dim; ++d) v.push_back(jamming_packing(d));
+  return fmt::format("below the D-dimensional jamming density ({} for D = 1..6)",
+                     fmt::join(v, ", "));
+}
+
+constexpr double pos_open = 0.0;  // lower end of "> 0" ranges (open)
+
+// clang-format off
+const Option table[] = {
+  {"engine", 0, E::both, U::command, &R::engine, {}, check_engine, engines_help, "", "the engine:", "", false, false},
+  {"dim", 'd', E::both, U::engine, &R::dim, {1, 6, false, false, "a dimension in 1..6"}, nullptr, nullptr, "", "dimension D, 1..6", "", false, false},
+  {"n", 'n', E::both, U::engine, &R::n, {2, 2147483648.0, false, false, "a number of particles in 2..2^31"}, nullptr, nullptr, "", "number of particles, >= 2 (1e6 is read as 1000000)", "", false, false},
+  {"out", 'o', E::both, U::command, &R::out, {}, nullptr, nullptr, "", "output folder (created if missing); files appear only when complete", "", false, true},
+  {"json", 0, E::both, U::command, &R::json, {}, nullptr, nullptr, "", "print the summary as one JSON object, the last stdout line", "", false, false},
+  {"model", 0, E::dsmc, U::engine, &R::model, {}, check_model, models_help, "", "collision model:", "", false, false},
+  {"vhs-exponent", 0, E::dsmc, U::engine, &R::vhs_exponent, {0, 1, false, false, "in [0, 1]"}, nullptr, nullptr, "", "VHS rate exponent a: pair rate ~ |g|^a, in [0, 1] (hs is 1, maxwell 0; with --model vhs only)", "", false, false},
+  {"init", 0, E::both, U::engine, &R::init, {}, check_init, inits_help, "", "initial velocities:", "", true, false},
+  {"until", 0, E::both, U::span, &R::until, {pos_open, 1e12, true, false, "a finite time > 0 and at most 1e12"}, nullptr, nullptr, time_unit, "end time", "", false, false},
+  {"every", 0, E::both, U::span, &R::every, {pos_open, 1e308, true, false, "a finite interval > 0"}, nullptr, nullptr, time_unit, "sampling interval, rounded so that it divides the sampled span: the rows are evenly spaced and the last is at --until (include/hypergas/schedule.hpp)", "until/50", false, false},
+  {"packing", 0, E::edmd, U::engine, &R::packing, {pos_open, 1, true, true, "a finite fraction > 0 and < 1"}, nullptr, jamming_help, "", "packing fraction eta (volume of the spheres / box volume),", "", false, false},
+  {"start-packing", 0, E::edmd, U::engine, &R::start_packing, {pos_open, 1, true, true, "> 0 and < 1"}, nullptr, nullptr, "", "start from the lattice at this packing, at most --packing, and compress (Lubachevsky-Stillinger) to --packing: a dense fluid or glass instead of a crystal", "start at --packing", false, false},
+  {"mass-ratio", 0, E::both, U::engine, &R::mass_ratio, {pos_open, 1e308, true, false, "a finite mass ratio > 0"}, nullptr, nullptr, "", "m2/m1 of a two-mass gas (1 = one species; use != 1 in D = 1)", "", false, false},
+  {"fraction", 0, E::both, U::engine, &R::fraction, {0, 1, false, false, "in [0, 1]"}, nullptr, nullptr, "", "number fraction of species 2 (mass m2)", "", true, false},
+  {"temperature", 0, E::dsmc, U::engine, &R::temperature, {1e-100, 1e100, false, false, "a finite kT > 0 in [1e-100, 1e100]"}, nullptr, nullptr, "m1 v0^2", "initial kT (edmd fixes kT = 1)", "", true, false},
+  {"seed", 0, E::both, U::engine, &R::seed, {0, 1.8446744073709552e19, false, false, "an integer in 0..2^64-1"}, nullptr, nullptr, "", "random seed", "", false, false},
+  {"threads", 'j', E::dsmc, U::engine, &R::threads, {1, 256, false, false, "in 1..256"}, nullptr, nullptr, "", "run the one system on T threads; every file is bit for bit the same for every T", "", false, false},
+  {"replicas", 0, E::dsmc, U::command, &R::replicas, {1, 64, false, false, "in 1..64"}, nullptr, nullptr, "", "run K independent copies (files from copy 0, which keeps --seed; summary adds totals and replica error bars)", "", false, false},
+  {"checkpoint-every", 0, E::both, U::command, &R::checkpoint_every, {pos_open, 1e308, true, false, "a finite time > 0"}, nullptr, nullptr, time_unit, "write OUT/checkpoint.hgck at the first sampling time after every T time units; continue a stopped run with `hypergas resume OUT`. Ctrl-C always writes one and stops", "off", false, false},
+  {"checkpoint-wall", 0, E::both, U::command, &R::checkpoint_wall, {}, check_duration, nullptr, "", "also write a checkpoint after this much wall time, e.g. 90s, 10min, 2h", "off", false, false},
+};
+// clang-format on
+
+[[noreturn]] void bad(const std::string& m) { throw InvalidInput(m); }
+
+void check_range(const Option& opt, double v, const std::string& shown) {
+  const Range& r = opt.range;
+  const bool ok = std::isfinite(v) && (r.lo_open ? v > r.lo : v >= r.lo) &&
+                  (r.hi_open ? v < r.hi : v <= r.hi);
+  if (!ok) bad(fmt::format("--{} must be {}, got {}", opt.name, r.must, shown));
+}
+
+void given(RunOptions& o, const Option& opt) {
+  const std::string n = cli_name(opt);
+  if (!o.was_given(n)) o.given.push_back(n);
+}
+
+[[noreturn]] void wrong_type(const Option& opt, const char* what) {
+  throw std::logic_error(fmt::format("option --{} is not {}", opt.name, what));
+}
+
+}  // namespace
+
+std::span<const Option> run_table() { return table; }
+
+const Option* find(std::string_view name) {
+  for (const Option& o : table) {
+    if (o.name == name) return &o;
+    if (python_name(o) == name) return &o;
+  }
+  return nullptr;
+}
+
+bool applies(const Option& opt, registry::EngineKind e) {
+  const unsigned bit = e == registry::EngineKind::dsmc ? 1u : 2u;
+  return (static_cast<unsigned>(opt.engines) & bit) != 0;
+}
+
+std::string cli_name(const Option& opt) { return "--" + std::string(opt.name); }
+
+std::string python_name(const Option& opt) {
+  std::string s(opt.name);
+  for (char& c : s)
+    if (c == '-') c = '_';
+  return s;
+}
+
+std::string_view type_name(const Option& opt) {
+  return std::visit(
+      [](auto m) -> std::string_view {
+        using T = std::remove_reference_t<decltype(std::declval<R&>().*m)>;
+        if constexpr (std::is_same_v<T, double>) return "NUM";
+        else if constexpr (std::is_same_v<T, std::uint64_t>) return "UINT";
+        else if constexpr (std::is_same_v<T, bool>) return "FLAG";
+        else if constexpr (std::is_same_v<T, std::string>) return "TEXT";
+        else return "INT";
+      },
+      opt.field);
+}
+
+RunOptions defaults(registry::EngineKind e) {
+  const dsmc::Config d;
+  const edmd::Config m;
+  const bool dsmc = e == registry::EngineKind::dsmc;
+  RunOptions o;
+  o.engine = std::string(registry::name(e));
+  o.dim = 3;
+  // Engine parameters: the engine's own Config defaults (the other engine's options keep
+  // theirs, for --help).
+  o.n = static_cast<long long>(dsmc ? d.n : m.n);
+  o.seed = dsmc ? d.seed : m.seed;
+  o.init = std::string(registry::name(dsmc ? d.init : m.init));
+  o.mass_ratio = dsmc ? d.initial.mass_ratio : m.initial.mass_ratio;
+  o.fraction = dsmc ? d.initial.fraction : m.initial.fraction;
+  o.temperature = d.initial.kT;
+  o.model = std::string(dsmc::HardSpheres::name);
+  o.vhs_exponent = d.vhs_exponent;
+  o.packing = m.packing;
+  o.start_packing = m.start_packing;
+  // The run's span and the command's switches.
+  o.until = dsmc ? 10.0 : 20.0;
+  o.every = 0.0;  // Schedule::default_intervals
+  o.threads = 1;
+  o.replicas = 1;
+  o.checkpoint_every = 0.0;
+  return o;
+}
+
+void set_text(RunOptions& o, const Option& opt, const std::string& text) {
+  const std::string name = cli_name(opt);
+  std::visit(
+      [&](auto m) {
+        using T = std::remove_reference_t<decltype(o.*m)>;
+        if constexpr (std::is_same_v<T, double>) set_real(o, opt, parse_number<double>(name, text));
+        else if constexpr (std::is_same_v<T, std::uint64_t>)
+          set_unsigned(o, opt, parse_number<std::uint64_t>(name, text));
+        else if constexpr (std::is_same_v<T, bool>) {
+          if (text != "true" && text != "false") bad(name + " is a flag: true or false");
+          set_flag(o, opt, text == "true");
+        } else if constexpr (std::is_same_v<T, std::string>) set_string(o, opt, text);
+        else set_integer(o, opt, parse_number<long long>(name, text));
+      },
+      opt.field);
+}
+
+void set_integer(RunOptions& o, const Option& opt, long long v) {
+  if (std::holds_alternative<std::uint64_t R::*>(opt.field)) {
+    if (v < 0) bad(fmt::format("--{} must be {}, got {}", opt.name, opt.range.must, v));
+    return set_unsigned(o, opt, static_cast<std::uint64_t>(v));
+  }
+  check_range(opt, static_cast<double>(v), std::to_string(v));
+  if (auto* p = std::get_if<int R::*>(&opt.field)) o.*(*p) = static_cast<int>(v);
+  else if (auto* q = std::get_if<long long R::*>(&opt.field)) o.*(*q) = v;
+  else wrong_type(opt, "an integer");
+  given(o, opt);
+}
+
+void set_unsigned(RunOptions& o, const Option& opt, std::uint64_t v) {
+  auto* p = std::get_if<std::uint64_t R::*>(&opt.field);
+  if (!p) {
+    if (v > static_cast<std::uint64_t>(1) << 62) check_range(opt, 1e300, std::to_string(v));
+    return set_integer(o, opt, static_cast<long long>(v));
+  }
+  o.*(*p) = v;
+  given(o, opt);
+}
+
+void set_real(RunOptions& o, const Option& opt, double v) {
+  auto* p = std::get_if<double R::*>(&opt.field);
+  if (!p) wrong_type(opt, "a number");
+  check_range(opt, v, fmt::format("{}", v));
+  o.*(*p) = v;
+  given(o, opt);
+}
+
+void set_string(RunOptions& o, const Option& opt, const std::string& v) {
+  auto* p = std::get_if<std::string R::*>(&opt.field);
+  if (!p) wrong_type(opt, "text");
+  if (opt.check) {
+    try {
+      opt.check(v);
+    } catch (const InvalidInput& e) {
+      const std::string what = e.what();
+      // parse_duration names the option itself
+      bad(what.rfind(cli_name(opt), 0) == 0 ? what : cli_name(opt) + ": " + what);
+    }
+  }
+  if (opt.required_cli && v.empty()) bad(cli_name(opt) + " must not be empty");
+  o.*(*p) = v;
+  given(o, opt);
+}
+
+void set_flag(RunOptions& o, const Option& opt, bool v) {
+  auto* p = std::get_if<bool R::*>(&opt.field);
+  if (!p) wrong_type(opt, "a flag");
+  o.*(*p) = v;
+  given(o, opt);
+}
+
+std::string value_text(const RunOptions& o, const Option& opt) {
+  return std::visit(
+      [&](auto m) -> std::string {
+        const auto& v = o.*m;
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, double>) return fmt::format("{:.17g}", v);
+        else if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
+        else if constexpr (std::is_same_v<T, std::string>) return v;
+        else return std::to_string(v);
+      },
+      opt.field);
+}
+
+std::string default_text(const Option& opt) {
+  if (!opt.unset.empty()) return std::string(opt.unset);
+  if (std::holds_alternative<std::string R::*>(opt.field) && opt.name == "engine")
+    return std::string(registry::name(default_engine));
+  // Shortest round-trip form for numbers ("0.1", not "0.10000000000000001").
+  const auto shown = [&](const RunOptions& r) {
+    if (auto* p = std::get_if<double R::*>(&opt.field)) return fmt::format("{}", r.*(*p));
+    return value_text(r, opt);
+  };
+  const std::string a = shown(defaults(registry::EngineKind::dsmc));
+  const std::string b = shown(defaults(registry::EngineKind::edmd));
+  if (opt.engines != Engines::both || a == b) return opt.engines == Engines::edmd ? b : a;
+  return fmt::format("{} for dsmc, {} for edmd", a, b);
+}
+
+std::vector<std::string> replay_arguments(const RunOptions& o) {
+  std::vector<std::string> a;
+  for (const Option& opt : table) {
+    if (opt.name == "out" || opt.name == "json" || !o.was_given(cli_name(opt))) continue;
+    a.push_back(cli_name(opt));
+    a.push_back(value_text(o, opt));
+  }
+  return a;
+}
+
+}  // namespace hypergas::options

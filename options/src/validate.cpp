@@ -1,0 +1,211 @@
+// options/src/validate.cpp -- checks across options, the engine configurations, number and
+// duration parsing.
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+#include <unistd.h>
+
+#include <fmt/core.h>
+
+#include "hypergas/edmd/box.hpp"
+#include "hypergas/error.hpp"
+#include "hypergas/initial_state.hpp"
+#include "hypergas/options/table.hpp"
+#include "hypergas/vec.hpp"
+
+namespace hypergas::options {
+
+namespace {
+[[noreturn]] void bad(const std::string& msg) { throw InvalidInput(msg); }
+
+/// Refuses a particle number whose state would not fit in this machine's memory.
+void check_memory(long long n, int dim, bool edmd) {
+  // Bytes per particle, a lower estimate: DSMC the padded velocities and a species byte;
+  // EDMD the [position, clock, velocity] record plus ~150 B of events, cells and calendar.
+  const double per = edmd ? 8.0 * hypergas::detail::record_stride(dim) + 150.0
+                          : 8.0 * hypergas::detail::padded_stride(dim) + 1.0;
+  const double need = per * static_cast<double>(n);
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page <= 0) return;
+  const double have = static_cast<double>(pages) * static_cast<double>(page);
+  if (need > have)
+    bad(fmt::format("--n {} needs about {:.3g} GB of memory for the {} state; this machine has "
+                    "{:.3g} GB",
+                    n, need / 1e9, edmd ? "edmd" : "dsmc", have / 1e9));
+}
+
+const Option& entry(std::string_view name) {
+  const Option* o = find(name);
+  if (!o) throw std::logic_error("no option " + std::string(name));
+  return *o;
+}
+}  // namespace
+
+template <class T>
+T parse_number(const std::string& option, const std::string& text) {
+  const char* b = text.data();
+  const char* e = b + text.size();
+  const auto fail = [&](const char* what) -> T {
+    bad(fmt::format("{} must be {}, got '{}'", option, what, text));
+  };
+  if constexpr (std::is_floating_point_v<T>) {
+    T x{};
+    const auto r = std::from_chars(b, e, x);
+    if (r.ec == std::errc::result_out_of_range) return fail("a number within double range");
+    if (text.empty() || r.ec != std::errc{} || r.ptr != e) return fail("a number");
+    return x;
+  } else {
+    T x{};
+    const auto r = std::from_chars(b, e, x);
+    if (!text.empty() && r.ec == std::errc{} && r.ptr == e) return x;
+    const char* what = std::is_signed_v<T> ? "an integer" : "an integer >= 0 (decimal digits)";
+    if constexpr (std::is_signed_v<T>) {  // 1e6, 2.5e3: exact integers in scientific form
+      double d = 0.0;
+      const auto rd = std::from_chars(b, e, d);
+      if (!text.empty() && rd.ec == std::errc{} && rd.ptr == e && std::isfinite(d) &&
+          d == std::floor(d) && std::fabs(d) < 9.0e18)
+        if (d >= static_cast<double>(std::numeric_limits<T>::min()) &&
+            d <= static_cast<double>(std::numeric_limits<T>::max()))
+          return static_cast<T>(d);
+    }
+    if (r.ec == std::errc::result_out_of_range)
+      return fail(std::is_signed_v<T> ? "an integer of a sensible size" : "below 2^64");
+    return fail(what);
+  }
+}
+
+template double parse_number<double>(const std::string&, const std::string&);
+template int parse_number<int>(const std::string&, const std::string&);
+template long long parse_number<long long>(const std::string&, const std::string&);
+template std::uint64_t parse_number<std::uint64_t>(const std::string&, const std::string&);
+
+double parse_duration(const std::string& option, const std::string& text) {
+  std::size_t pos = 0;
+  double x = 0.0;
+  try {
+    x = std::stod(text, &pos);
+  } catch (const std::exception&) {
+    bad(fmt::format("{} must be a duration such as 90s, 10min or 2h, got '{}'", option, text));
+  }
+  const std::string unit = text.substr(pos);
+  double f = 0.0;
+  if (unit.empty() || unit == "s") f = 1.0;
+  else if (unit == "min" || unit == "m") f = 60.0;
+  else if (unit == "h") f = 3600.0;
+  else bad(fmt::format("{}: unknown unit '{}' in '{}' (use s, min or h)", option, unit, text));
+  if (!(std::isfinite(x) && x > 0.0 && x * f <= 1e9))
+    bad(fmt::format("{} must be a duration > 0 and at most 1e9 s, got '{}'", option, text));
+  return x * f;
+}
+
+void check_dim(int d, const std::string& option) {
+  if (d < min_dim || d > max_dim)
+    bad(fmt::format("{} must be {}, got {}", option, entry("dim").range.must, d));
+}
+
+void check_n(long long n, const std::string& option) {
+  const Range& r = entry("n").range;
+  if (static_cast<double>(n) < r.lo || static_cast<double>(n) > r.hi)
+    bad(fmt::format("{} must be {}, got {}", option, r.must, n));
+}
+
+void check_threads(long long t, const std::string& option) {
+  const Range& r = entry("threads").range;
+  if (static_cast<double>(t) < r.lo || static_cast<double>(t) > r.hi)
+    bad(fmt::format("{} must be {}, got {}", option, r.must, t));
+}
+
+void check_start_packing(double start, double packing) {
+  if (!(std::isfinite(start) && start > 0.0 && start <= packing))
+    bad(fmt::format("--start-packing must be > 0 and at most --packing {}, got {}", packing,
+                    start));
+}
+
+double jamming_packing(int dim) {
+  check_dim(dim, "dimension");
+  return edmd::jamming_packing(dim);  // sources in include/hypergas/edmd/box.hpp
+}
+
+bool RunOptions::was_given(const std::string& name) const {
+  return std::find(given.begin(), given.end(), name) != given.end();
+}
+
+double RunOptions::checkpoint_wall_seconds() const {
+  return checkpoint_wall.empty() ? 0.0 : parse_duration("--checkpoint-wall", checkpoint_wall);
+}
+
+registry::EngineKind RunOptions::engine_kind() const { return registry::engine(engine); }
+
+InitialState RunOptions::initial_state() const { return registry::initial_state(init); }
+
+void validate(const RunOptions& o) {
+  const registry::EngineKind e = o.engine_kind();
+  const bool edmd = e == registry::EngineKind::edmd;
+  // Each option's own range was checked when it was set; here what involves several.
+  for (const Option& opt : run_table())
+    if (!applies(opt, e) && o.was_given(cli_name(opt)))
+      bad(fmt::format("{} applies to --engine {} only, not to --engine {}", cli_name(opt),
+                      edmd ? "dsmc" : "edmd", o.engine));
+  if (o.was_given("--vhs-exponent") && o.model != dsmc::VariableHardSpheres::name)
+    bad(fmt::format("--vhs-exponent applies to --model {} only, not to --model {}",
+                    dsmc::VariableHardSpheres::name, o.model));
+  try {
+    (void)o.schedule(0.0);
+  } catch (const InvalidInput&) {
+    bad(fmt::format("--until / --every = {:.3g} samples; at most 1e6 (each is a row of "
+                    "moments.csv)",
+                    o.until / o.every));
+  }
+  if ((o.checkpoint_every > 0.0 || !o.checkpoint_wall.empty()) && o.replicas != 1)
+    bad("--checkpoint-every and --checkpoint-wall need --replicas 1 (one system)");
+  if (edmd) {
+    const double jam = jamming_packing(o.dim);
+    if (o.packing >= jam)
+      bad(fmt::format("--packing {} is at or above the jamming density {} of hard spheres in "
+                      "D = {}",
+                      o.packing, jam, o.dim));
+    if (o.was_given("--start-packing")) check_start_packing(o.start_packing, o.packing);
+    // 1D: the collision rate grows as 1 / (1 - eta) (N = 30 in t = 0.5: 835, 8493, 84933
+    // collisions at eta = 0.99, 0.999, 0.9999), so a run near 1 never ends.
+    if (o.dim == 1 && o.packing > 0.99)
+      bad(fmt::format("--packing {} in D = 1: at most 0.99 (the collision rate grows as "
+                      "1 / (1 - packing))",
+                      o.packing));
+  }
+  check_memory(o.n, o.dim, edmd);
+}
+
+namespace {
+/// What both engine configurations take from the options alike.
+template <class Config>
+Config common_config(const RunOptions& o) {
+  Config cfg;
+  cfg.n = static_cast<std::size_t>(o.n);
+  cfg.seed = o.seed;
+  cfg.init = o.initial_state();
+  cfg.initial.fraction = o.fraction;
+  cfg.initial.mass_ratio = o.mass_ratio;
+  return cfg;
+}
+}  // namespace
+
+dsmc::Config dsmc_config(const RunOptions& o) {
+  auto cfg = common_config<dsmc::Config>(o);
+  cfg.vhs_exponent = o.vhs_exponent;
+  cfg.initial.kT = o.temperature;
+  return cfg;
+}
+
+edmd::Config edmd_config(const RunOptions& o) {
+  auto cfg = common_config<edmd::Config>(o);
+  cfg.packing = o.packing;
+  cfg.start_packing = o.start_packing;
+  cfg.initial.kT = 1.0;  // EDMD units: kT = 1
+  return cfg;
+}
+
+bool two_species(const RunOptions& o) { return o.mass_ratio != 1.0; }
+
+}  // namespace hypergas::options

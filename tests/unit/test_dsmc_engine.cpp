@@ -153,6 +153,42 @@ TEST_CASE("DSMC: bad configurations throw InvalidInput", "[dsmc]") {
   REQUIRE_THROWS_AS((Engine<2, HardSpheres>(rest, Particles<2>(10))), InvalidInput);
 }
 
+// The time unit is defined in the centre-of-mass frame (dsmc/time_unit.hpp), so given
+// particles must have zero total momentum to rounding: |P| <= 1e-9 sqrt(M sum m v^2).
+TEST_CASE("DSMC from given particles: zero total momentum required", "[dsmc]") {
+  using Catch::Matchers::Contains;
+  Config cfg;
+  Particles<3> p(100);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (int k = 0; k < 3; ++k) p.velocity(i)[k] = std::sin(1.0 + 3.0 * double(i) + k);
+  Vec<3> mean = Vec<3>::Zero();
+  for (std::size_t i = 0; i < p.size(); ++i) mean += p.velocity(i) / double(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) p.velocity(i) -= mean;
+  REQUIRE_NOTHROW((Engine<3, HardSpheres>(cfg, p)));
+  Particles<3> drift = p;  // a residual of 1e-12 of the scale passes, 1e-6 does not
+  drift.velocity(0)[1] += 1e-12;
+  REQUIRE_NOTHROW((Engine<3, HardSpheres>(cfg, drift)));
+  drift.velocity(0)[1] += 1e-6;
+  REQUIRE_THROWS_WITH((Engine<3, HardSpheres>(cfg, drift)),
+                      Contains("the total momentum must be zero"));
+  Particles<3> shifted = p;
+  for (std::size_t i = 0; i < p.size(); ++i) shifted.velocity(i)[0] += 1.0;
+  REQUIRE_THROWS_AS((Engine<3, HardSpheres>(cfg, shifted)), InvalidInput);
+  REQUIRE_THROWS_WITH((Engine<3, HardSpheres>(cfg, Particles<3>(10))),
+                      Contains("velocities must not all be zero"));
+  // Two masses: m0 = 1, m1 = 3; v0 = 1.5, v1 = -0.5 is at rest in the mean, v1 = +0.5 is not.
+  constexpr Features S{.species = true};
+  Particles<1, S> q(2);
+  q.set_species_mass(1, 3.0);
+  q.set_species(1, 1);
+  q.velocity(0)[0] = 1.5;
+  q.velocity(1)[0] = -0.5;
+  REQUIRE_NOTHROW((Engine<1, HardSpheres, S>(cfg, q)));
+  q.velocity(1)[0] = 0.5;
+  REQUIRE_THROWS_WITH((Engine<1, HardSpheres, S>(cfg, q)),
+                      Contains("the total momentum must be zero"));
+}
+
 // The engine tests a batch of candidates at once and re-tests those that share a particle
 // with a collision taken before them (each epoch, with its bound G, starts a new batch). The
 // self-check re-tests every pending candidate against the state of the moment before each

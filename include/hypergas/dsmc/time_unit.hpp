@@ -65,4 +65,28 @@ double rate_constant(const Particles<D, F>& p, double a) {
   }
 }
 
+/// Throws InvalidInput unless the total momentum is zero to rounding, |P| <= 1e-9
+/// sqrt(M sum m |v|^2) (sums in long double), and the velocities are not all zero: the time
+/// unit above is defined in the centre-of-mass frame.
+template <int D, Features F>
+void require_zero_momentum(const Particles<D, F>& p) {
+  std::array<long double, D> mom{};
+  long double mass = 0.0L, mv2 = 0.0L;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double m = p.mass(i);
+    mass += m;
+    for (int k = 0; k < D; ++k) {
+      const double x = p.velocity(i)[k];
+      mom[static_cast<std::size_t>(k)] += m * x;
+      mv2 += m * x * x;
+    }
+  }
+  long double p2 = 0.0L;
+  for (const long double pk : mom) p2 += pk * pk;
+  if (!(mv2 > 0.0L)) throw InvalidInput("velocities must not all be zero");
+  if (std::sqrt(static_cast<double>(p2)) > 1e-9 * std::sqrt(static_cast<double>(mass * mv2)))
+    throw InvalidInput("the total momentum must be zero (the time unit is defined in the "
+                       "centre-of-mass frame): subtract the mass-weighted mean velocity");
+}
+
 }  // namespace hypergas::dsmc

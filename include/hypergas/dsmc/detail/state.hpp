@@ -1,0 +1,94 @@
+// hypergas/dsmc/detail/state.hpp -- the state that the pieces of the DSMC engine share (the
+// velocities, the epochs' random stream, the majorant, the clock and the counters) and the
+// per-candidate kernel on it: draw a candidate, test it, collide it. The kernel functions
+// are force-inlined into the candidate loop (lane.hpp), the block schedule (parallel.hpp)
+// and the self-check (self_check.hpp), which all decide a candidate the same way.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+
+#include "hypergas/dsmc/config.hpp"
+#include "hypergas/dsmc/detail/candidates.hpp"
+#include "hypergas/dsmc/majorant.hpp"
+#include "hypergas/dsmc/models.hpp"
+#include "hypergas/dsmc/update.hpp"
+#include "hypergas/particles.hpp"
+#include "hypergas/rng.hpp"
+#include "hypergas/vec.hpp"
+
+namespace hypergas::dsmc::detail {
+
+/// Shared state of Engine<D, Model, F>: plain data with the per-candidate kernel. Every
+/// member but `draws` is saved by the engine's io() (the draws are a function of the seed).
+template <int D, class Model, Features F>
+struct State {
+  using ParticlesT = Particles<D, F>;
+  static constexpr int stride = ParticlesT::stride;
+
+  State(const Config& c, Model m) : cfg(c), model(m), rng(Rng(c.seed).split(2)), draws(c.seed) {}
+  State(const Config& c, Model m, ParticlesT particles)
+      : cfg(c), p(std::move(particles)), model(m), rng(Rng(c.seed).split(2)), draws(c.seed) {}
+
+  Config cfg;
+  ParticlesT p;
+  Model model;
+  Rng rng;               // the epochs' Poisson counts and order-statistic times
+  std::uint32_t n = 0;
+  double c = 0.0;        // rate constant
+  double lambda = 0.0;   // candidate rate N c G^a / 2 (per mean collision time)
+  SpeedBound bound;
+  double raise_to = 0.0;  // pending new maximum squared speed
+  double time = 0.0;
+  double observed_at = -1.0;
+  std::uint64_t collisions = 0, candidates = 0, since_scan = 0;
+  CandidateStream draws;  // candidate K's draws: a function of (seed, K)
+  bool self_check = false;
+  std::uint64_t check_failures = 0;
+  std::array<double, max_species> species_w{};  // the observers' species mass table
+
+  /// Candidate K: its pair and acceptance uniform (candidates.hpp).
+  void draw(std::uint64_t K, std::uint32_t& i, std::uint32_t& j, double& u) const {
+    draws.draw(K, n, i, j, u);
+  }
+  void draw_pair(std::uint64_t K, std::uint32_t& i, std::uint32_t& j) const {
+    draws.draw_pair(K, n, i, j);
+  }
+  /// Whether pair (i, j) with acceptance uniform u is accepted now with bound G.
+  [[gnu::always_inline]] bool accepts(std::uint32_t i, std::uint32_t j, double u, double G) const {
+    if constexpr (Model::needs_majorant) {
+      const double* v = p.velocity_data().data();
+      double g2 = 0.0;
+      for (int d = 0; d < D; ++d) {
+        const double x = v[std::size_t(i) * stride + d] - v[std::size_t(j) * stride + d];
+        g2 += x * x;
+      }
+      return model.accept(g2, u, G);
+    } else {
+      (void)i, (void)j, (void)u, (void)G;
+      return true;
+    }
+  }
+  /// Collides pair (i, j) as candidate K (its scattering words from word 2 of K on);
+  /// returns the larger of the two new squared speeds.
+  [[gnu::always_inline]] double collide(std::uint32_t i, std::uint32_t j, std::uint64_t K) {
+    using Map = Eigen::Map<Vec<D>>;
+    double* v = p.velocity_data().data();
+    Map vi(v + std::size_t(i) * stride), vj(v + std::size_t(j) * stride);
+    EventStream rng_k = draws.scattering(K);
+    const Vec<D> g = vi - vj;
+    const double gn = std::sqrt(g.squaredNorm());
+    const Vec<D> delta = Model::template deflect<D>(g, gn, rng_k) - g;
+    apply_deflection<D>(p, i, j, vi, vj, delta);
+    if constexpr (Model::needs_majorant)
+      return std::max(vi.squaredNorm(), vj.squaredNorm());
+    else
+      return 0.0;
+  }
+};
+
+}  // namespace hypergas::dsmc::detail

@@ -1,0 +1,125 @@
+// hypergas/dsmc/detail/stepping.hpp -- time stepping: the exact scheme's Poisson epochs
+// (stopped at a raise of the bound, the clock moved to the stopping candidate's order
+// statistic), Bird's NTC steps of dt, and the majorant upkeep both share. Each epoch or
+// step hands its candidates to the one-thread loop (lane.hpp) or to the thread team
+// (parallel.hpp). docs/design.md, "The exact Kac process (DSMC)", derives the epochs.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <random>
+
+#include "hypergas/dsmc/config.hpp"
+#include "hypergas/dsmc/detail/lane.hpp"
+#include "hypergas/dsmc/detail/parallel.hpp"
+#include "hypergas/dsmc/detail/state.hpp"
+
+namespace hypergas::dsmc::detail {
+
+/// lambda = N c G^a / 2 for the current bound G.
+template <int D, class Model, Features F>
+void set_lambda(State<D, Model, F>& s) {
+  const double ga =
+      s.model.exponent() == 1.0 ? s.bound.bound() : std::pow(s.bound.bound(), s.model.exponent());
+  s.lambda = 0.5 * s.n * s.c * ga;
+}
+
+/// Resets the majorant from an exact scan (when `force` or after enough candidates).
+template <int D, class Model, Features F>
+void retune(State<D, Model, F>& s, bool force) {
+  if constexpr (!Model::needs_majorant) {
+    s.lambda = 0.5 * s.n * s.c;
+    return;
+  }
+  if (force || s.since_scan >= 8ull * s.n) {
+    s.bound.rescan(s.p);
+    s.since_scan = 0;
+  }
+  set_lambda(s);
+}
+
+/// Processes up to m candidates. Exact: stops after an accepted collision that leaves a
+/// speed above the bound and returns the number processed (raise_to holds the new
+/// maximum squared speed). NTC: never stops; records the largest such speed.
+template <bool Exact, int D, class Model, Features F>
+std::uint64_t process(State<D, Model, F>& s, ParallelBlocks& blocks, std::uint64_t m) {
+  std::uint64_t k;
+  if (blocks.takes(m)) {
+    k = blocks.process<Exact>(s, m);
+  } else {
+    Lane lane;
+    k = run_lane<Exact, false, false>(s, lane, s.candidates, m, s.bound.bound());
+    s.collisions += lane.collisions;
+    s.raise_to = std::max(s.raise_to, lane.raise_s2);
+  }
+  s.candidates += k;
+  return k;
+}
+
+/// Exact scheme: Poisson epochs of at most ~2N candidates up to t_end.
+template <int D, class Model, Features F>
+void advance_exact(State<D, Model, F>& s, ParallelBlocks& blocks,
+                   const std::function<void()>& poll, double t_end) {
+  while (s.time < t_end) {
+    retune(s, false);
+    double h = t_end - s.time;
+    const double hmax = 2.0 * s.n / s.lambda;  // epochs of ~2N candidates
+    const bool capped = h > hmax;
+    if (capped) h = hmax;
+    std::poisson_distribution<std::uint64_t> pois(s.lambda * h);
+    const std::uint64_t m = pois(s.rng);
+    const std::uint64_t k = process<true>(s, blocks, m);
+    s.since_scan += k;
+    // a raise stops the epoch at its candidate, the m-th included (raise_to is set)
+    if (s.raise_to == 0.0) {
+      s.time = capped ? s.time + h : t_end;
+    } else {
+      // k-th of m uniform order statistics on [time, time + h].
+      std::gamma_distribution<double> ga(static_cast<double>(k)),
+          gb(static_cast<double>(m - k + 1));
+      const double x = ga(s.rng), y = gb(s.rng);
+      s.time = std::min(s.time + h * (x / (x + y)), t_end);
+      s.bound.set(s.raise_to);
+      s.raise_to = 0.0;
+      set_lambda(s);
+    }
+    if (poll) poll();
+  }
+}
+
+/// NTC scheme: steps of dt (the last one shortened to end at t_end), the bound raised
+/// only at the end of a step.
+template <int D, class Model, Features F>
+void advance_ntc(State<D, Model, F>& s, ParallelBlocks& blocks,
+                 const std::function<void()>& poll, double t_end) {
+  while (s.time < t_end) {
+    retune(s, false);
+    double h = s.cfg.dt;
+    const bool last = h >= t_end - s.time;
+    if (last) h = t_end - s.time;
+    const auto m = static_cast<std::uint64_t>(std::floor(s.lambda * h + s.rng.uniform()));
+    process<false>(s, blocks, m);
+    s.since_scan += m;
+    if (s.raise_to > 0.0) {  // the bound catches up only at the end of the step
+      s.bound.set(s.raise_to);
+      s.raise_to = 0.0;
+      set_lambda(s);
+    }
+    s.time = last ? t_end : s.time + h;
+    if (poll) poll();
+  }
+}
+
+/// Advances to t_end with the configured scheme.
+template <int D, class Model, Features F>
+void advance_to(State<D, Model, F>& s, ParallelBlocks& blocks,
+                const std::function<void()>& poll, double t_end) {
+  if (s.cfg.scheme == Scheme::exact)
+    advance_exact(s, blocks, poll, t_end);
+  else
+    advance_ntc(s, blocks, poll, t_end);
+}
+
+}  // namespace hypergas::dsmc::detail

@@ -1,0 +1,123 @@
+// python/src/bind_observers.cpp -- the command's recorders as Python observers: Observer,
+// MomentsRecorder (the rows of moments.csv, histograms) and VacfRecorder.
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "convert.hpp"
+#include "hypergas/analysis/histogram.hpp"
+#include "hypergas/analysis/maxwell.hpp"
+#include "hypergas/analysis/moments_recorder.hpp"
+#include "hypergas/analysis/vacf_recorder.hpp"
+#include "hypergas/error.hpp"
+#include "hypergas/observer.hpp"
+
+namespace hypergas::python {
+namespace {
+
+py::dict histogram_dict(const analysis::Histogram& h, const analysis::MaxwellReference& ref) {
+  const std::size_t b = h.bins();
+  py::array_t<double> lo(b), hi(b), count(b), density(b), mb(b);
+  for (std::size_t i = 0; i < b; ++i) {
+    lo.mutable_at(i) = h.lower(i);
+    hi.mutable_at(i) = h.upper(i);
+    count.mutable_at(i) = h.count(i);
+    density.mutable_at(i) = h.density(i);
+    mb.mutable_at(i) = analysis::bin_density(ref, h.lower(i), h.upper(i));  // as in the CSV
+  }
+  py::dict d;
+  d["lo"] = lo, d["hi"] = hi, d["count"] = count, d["density"] = density;
+  d["maxwell_density"] = mb, d["kT"] = ref.kT, d["mass"] = ref.mass, d["dim"] = ref.dim;
+  d["underflow"] = h.underflow(), d["overflow"] = h.overflow();
+  return d;
+}
+
+}  // namespace
+
+void bind_observers(py::module_& m) {
+  py::class_<Observer>(m, "Observer");
+  py::class_<analysis::MomentsRecorder, Observer>(m, "MomentsRecorder")
+      .def(py::init([](const py::object& bins, const py::object& ks_sample,
+                       const py::object& ks_seed, const py::object& threads) {
+             const long long b = as_integer("bins", bins);
+             const long long k = as_integer("ks_sample", ks_sample);
+             if (b < 1 || b > 100000000)
+               throw InvalidInput("bins must be in 1..1e8, got " + std::to_string(b));
+             if (k < 1) throw InvalidInput("ks_sample must be >= 1, got " + std::to_string(k));
+             const long long t = as_integer("threads", threads);
+             if (t < 1 || t > 64) throw InvalidInput("threads must be in 1..64, got " + std::to_string(t));
+             auto r = std::make_unique<analysis::MomentsRecorder>(
+                 static_cast<std::size_t>(b), static_cast<std::size_t>(k), as_seed(ks_seed));
+             r->set_threads(static_cast<int>(t));
+             return r;
+           }),
+           py::arg("bins") = 50,
+           py::arg("ks_sample") = analysis::MomentsRecorder::default_ks_cap,
+           py::arg("ks_seed") = analysis::MomentsRecorder::default_ks_seed,
+           py::arg("threads") = 1)
+      .def_property_readonly("threads", &analysis::MomentsRecorder::threads)
+      .def_property_readonly("columns", &analysis::MomentsRecorder::columns)
+      .def_property_readonly("rows",
+                             [](const analysis::MomentsRecorder& r) {
+                               const auto& rows = r.rows();
+                               const std::size_t c = r.columns().size();
+                               py::array_t<double> a({rows.size(), c});
+                               for (std::size_t i = 0; i < rows.size(); ++i)
+                                 for (std::size_t j = 0; j < c; ++j) a.mutable_at(i, j) = rows[i][j];
+                               return a;
+                             })
+      .def("column", [](const analysis::MomentsRecorder& r,
+                        const std::string& name) { return to_numpy(r.column(name)); })
+      .def("histogram",
+           [](const analysis::MomentsRecorder& r, int species) {
+             return histogram_dict(r.last_histogram(species), r.last_reference(species));
+           },
+           py::arg("species") = -1)
+      .def("observe_array",
+           [](analysis::MomentsRecorder& r, const py::handle& v, const py::handle& masses,
+              double time) {
+             ArraySnapshot a = array_snapshot(v, masses, time);
+             r.observe(a.s);
+           },
+           py::arg("velocities"), py::arg("masses") = py::none(), py::arg("time") = 0.0)
+      .def("write_moments_csv", &analysis::MomentsRecorder::write_moments_csv)
+      .def("write_speed_histogram_csv", &analysis::MomentsRecorder::write_speed_histogram_csv,
+           py::arg("path"), py::arg("species") = -1);
+
+  py::class_<analysis::VacfRecorder, Observer>(m, "VacfRecorder")
+      .def(py::init([](const py::object& max_particles) {
+             const long long k = as_integer("max_particles", max_particles);
+             if (k < 1) throw InvalidInput("max_particles must be >= 1, got " + std::to_string(k));
+             return std::make_unique<analysis::VacfRecorder>(static_cast<std::size_t>(k));
+           }),
+           py::arg("max_particles") = 1000)
+      .def_property_readonly("frames", &analysis::VacfRecorder::frames)
+      .def_property_readonly("particles", &analysis::VacfRecorder::particles)
+      .def_property_readonly("dt", &analysis::VacfRecorder::dt)
+      .def_property_readonly("has_positions", &analysis::VacfRecorder::has_positions)
+      .def("lags",
+           [](const analysis::VacfRecorder& r, std::size_t max_lag) {
+             const auto l = r.lags(max_lag);
+             return py::array_t<std::uint64_t>(static_cast<py::ssize_t>(l.size()),
+                                               reinterpret_cast<const std::uint64_t*>(l.data()));
+           },
+           py::arg("max_lag") = 0)
+      .def("vacf", [](const analysis::VacfRecorder& r,
+                      std::size_t max_lag) { return to_numpy(r.vacf(max_lag)); },
+           py::arg("max_lag") = 0)
+      .def("msd", [](const analysis::VacfRecorder& r,
+                     std::size_t max_lag) { return to_numpy(r.msd(max_lag)); },
+           py::arg("max_lag") = 0)
+      .def("green_kubo", &analysis::VacfRecorder::green_kubo, py::arg("max_lag") = 0)
+      .def("write_csv", &analysis::VacfRecorder::write_csv, py::arg("path"),
+           py::arg("max_lag") = 0);
+}
+
+}  // namespace hypergas::python

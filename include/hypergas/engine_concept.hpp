@@ -6,8 +6,9 @@
 //                                cfg.init with parameters cfg.initial (InitialParams) from
 //                                cfg.seed, and throws InvalidInput for a bad configuration;
 //   e.run_until(t, obs, every)   advances the gas to time t (time() == t afterwards). With an
-//                                observer, obs->observe(snapshot) is called at t0, t0 +
-//                                every, t0 + 2 every, ... <= t, t0 = time() at the call.
+//                                observer, obs->observe(snapshot) is called at the instants
+//                                of Schedule::make(t0, t, every) (schedule.hpp: evenly
+//                                spaced, the last at t), t0 = time() at the call.
 //                                Throws InvalidInput if t is not finite or t < time(), or if
 //                                obs is set and `every` is not finite and > 0;
 //   e.observe(obs)               calls obs.observe with the state at time(), changing

@@ -31,9 +31,6 @@ namespace hypergas {
 /// template argument: `Particles<3, Features{.positions = true}>`.
 struct Features {
   bool positions = false;  ///< positions (event-driven MD); velocity-space scenes have none
-  /// No storage: Particles refuses both (dsmc::Engine's constraint names them).
-  bool masses = false;
-  bool radii = false;
   bool species = false;    ///< a small species index per particle; mass from a species table
   constexpr bool operator==(const Features&) const = default;
 };
@@ -114,7 +111,7 @@ void permute_records(Array& a, const std::vector<std::uint32_t>& from, std::size
 /// Particle storage for `n` particles in D dimensions with optional fields `F`.
 /// Units are those of the engine that owns it (see the engines' docs).
 template <int D, Features F = Features{}>
-requires Dimension<D> && (!F.masses) && (!F.radii)
+requires Dimension<D>
 class Particles {
  public:
   static constexpr int dim = D;

@@ -1,5 +1,6 @@
 """The engines: DSMC and EDMD, thin Python classes over the compiled handles."""
 
+import inspect
 import math
 
 import numpy as np
@@ -22,12 +23,13 @@ class _Engine:
         """Advances the gas to time ``until`` and returns the engine.
 
         With ``observers`` (MomentsRecorder, VacfRecorder) or a ``callback`` (called as
-        ``callback(engine)``), they are called at t0, t0 + every, t0 + 2 every, ... up to
-        ``until``, t0 being the time at the call; ``every`` defaults to (until - t0) / 50
-        then, as in the command. An instant already observed by the previous run is not
-        observed again. The stops are those of ``hypergas run --every``, so a run with the
-        same seed and stops gives the command's trajectory bit for bit (DSMC), or the same
-        trajectory whatever the stops (EDMD).
+        ``callback(engine)``), they are called at the instants of ``hypergas run --every``:
+        K + 1 evenly spaced times from t0 (the time at the call) to ``until``, K =
+        round((until - t0) / every) (at least 1; 50 without ``every``), so ``every`` is
+        rounded to divide the span and the last call is at ``until``. An instant already
+        observed by the previous run is not observed again. A run with the same seed and
+        ``every`` gives the command's trajectory and moments.csv rows bit for bit (DSMC), or
+        the same trajectory whatever the stops (EDMD).
 
         The GIL is released while the engine runs. Ctrl-C raises KeyboardInterrupt within
         about 0.1 s (DSMC: at the end of the current epoch of ~2N candidates) and leaves
@@ -38,8 +40,7 @@ class _Engine:
         t0 = self.time
         if not until >= t0:
             raise ValueError(f"until must be >= the engine time {t0:.17g}, got {until!r}")
-        if until > 1e12:
-            raise ValueError(f"until must be at most 1e12, got {until!r}")
+        _hypergas.check_option(self._kind, "until", until)
         observers = tuple(observers)
         for o in observers:
             if not isinstance(o, _hypergas.Observer):
@@ -50,34 +51,21 @@ class _Engine:
         sampling = bool(observers) or callback is not None
         if every is not None:
             every = _time_argument("every", every)
-            if not every > 0:
-                raise ValueError(f"every must be a finite interval > 0, got {every!r}")
-            if (until - t0) / every > 1e6:
-                raise ValueError(f"(until - time) / every = {(until - t0) / every:.3g} "
-                                 "samples; at most 1e6")
-        elif sampling:
-            every = (until - t0) / 50 if until > t0 else 1.0
+            _hypergas.check_option(self._kind, "every", every)
+        # The command's sampling instants (hypergas/schedule.hpp): evenly spaced, the last
+        # at until.
+        schedule = _hypergas.Schedule(t0, until, 0.0 if every is None else every)
         bar = Progress(t0, until, f"{self._kind} D={self.dim}") if progress else None
         try:
             if sampling:
-                k = 0
-                while True:
-                    tk = t0 + k * every
-                    if tk > until:
-                        if self._kind == "dsmc" and tk - until <= 1e-9 * every:
-                            tk = until  # the command's rule for the last grid point
-                        else:
-                            break
-                    self._h.advance(tk, bar)
+                for k in range(schedule.rows):
+                    self._h.advance(schedule.time(k), bar)
                     if self._observed_at != self.time:
                         for o in observers:
                             self._h.observe(o)
                         if callback is not None:
                             callback(self)
                         self._observed_at = self.time
-                    k += 1
-                    if tk == until:
-                        break
             self._h.advance(until, bar)
         finally:
             if bar is not None:
@@ -171,13 +159,9 @@ def _time_argument(name, value):
 class DSMC(_Engine):
     """The spatially homogeneous hard-sphere gas: the exact Kac/Boltzmann process.
 
-    Keyword arguments are the options of ``hypergas run --engine dsmc`` (defaults alike):
-    ``dim`` (1..6), ``n`` (particles, >= 2), ``model`` ("hs", "maxwell", "vhs"),
-    ``vhs_exponent`` (vhs only), ``init`` (initial state, default "delta"; see
-    ``hypergas.initial_states``), ``mass_ratio`` and ``fraction`` (a two-mass gas),
-    ``temperature`` (initial kT), ``seed`` and ``threads`` (one system on several threads;
-    the result is the same for every count). Python only: ``scheme`` ("exact" or "ntc",
-    Bird's no-time-counter scheme) and ``dt`` (its step).
+    The arguments are the options of ``hypergas run --engine dsmc``, with its defaults and
+    checks (listed below, from the command's option table). Python only: ``scheme``
+    ("exact" or "ntc", Bird's no-time-counter scheme) and ``dt`` (its step).
 
     Units: time in equilibrium mean collision times; mass of species 0 = 1; velocities in
     units where the initial kT is ``temperature``.
@@ -185,38 +169,37 @@ class DSMC(_Engine):
 
     _kind = "dsmc"
 
-    def __init__(self, dim=3, n=10000, *, model=None, init=None, seed=None, threads=None,
-                 vhs_exponent=None, temperature=None, mass_ratio=None, fraction=None,
-                 scheme="exact", dt=0.01):
+    def __init__(self, *args, scheme="exact", dt=0.01, **kwargs):
         if not isinstance(scheme, str):
             raise TypeError(f"scheme must be a string, got {type(scheme).__name__}")
         dt = _time_argument("dt", dt)
-        super().__init__(_hypergas.make_dsmc(
-            scheme=scheme, dt=dt, dim=dim, n=n, model=model, init=init, seed=seed,
-            threads=threads, vhs_exponent=vhs_exponent, temperature=temperature,
-            mass_ratio=mass_ratio, fraction=fraction))
-        self.seed = 1 if seed is None else int(seed)
+        given = _given(DSMC, args, kwargs)
+        super().__init__(_hypergas.make_dsmc(scheme=scheme, dt=dt, **given))
+        self.seed = int(given.get("seed", _DEFAULTS["dsmc"]["seed"]))
         self.scheme = scheme
 
     @classmethod
-    def from_velocities(cls, velocities, *, species=None, mass_ratio=None, model=None,
-                        seed=None, threads=None, vhs_exponent=None, scheme="exact", dt=0.01):
+    def from_velocities(cls, velocities, *, species=None, scheme="exact", dt=0.01, **kwargs):
         """A DSMC gas that starts from the given velocities (copied), shape (n, dim).
 
         ``species`` (0 or 1 per particle) with ``mass_ratio`` (the mass of species 1; species
         0 has mass 1) gives a two-mass gas. The total momentum must be zero: the time unit,
         the equilibrium mean collision time, is defined in the centre-of-mass frame, so
         subtract the mass-weighted mean velocity first. With the velocities and the seed of
-        another DSMC engine at t = 0, the trajectory is that engine's, bit for bit.
+        another DSMC engine at t = 0, the trajectory is that engine's, bit for bit. The other
+        keyword arguments are the constructor's, less those that the velocities fix (dim,
+        n) or that describe an initial state (init, fraction, temperature).
         """
         if not isinstance(scheme, str):
             raise TypeError(f"scheme must be a string, got {type(scheme).__name__}")
         dt = _time_argument("dt", dt)
         self = cls.__new__(cls)
+        bound = DSMC.from_velocities.__func__.__signature__.bind(None, velocities, **kwargs)
+        given = {k: v for k, v in bound.arguments.items()
+                 if k not in ("cls", "velocities") and v is not None}
         _Engine.__init__(self, _hypergas.make_dsmc_from(
-            velocities, species, scheme=scheme, dt=dt, model=model, seed=seed,
-            threads=threads, vhs_exponent=vhs_exponent, mass_ratio=mass_ratio))
-        self.seed = 1 if seed is None else int(seed)
+            velocities, species, scheme=scheme, dt=dt, **given))
+        self.seed = int(given.get("seed", _DEFAULTS["dsmc"]["seed"]))
         self.scheme = scheme
         return self
 
@@ -248,9 +231,8 @@ class DSMC(_Engine):
 class EDMD(_Engine):
     """Event-driven molecular dynamics of hard spheres in a periodic box.
 
-    Keyword arguments are the options of ``hypergas run --engine edmd``: ``dim``, ``n``,
-    ``packing`` (volume fraction, below jamming), ``start_packing``, ``init`` (default
-    "maxwell"), ``mass_ratio``, ``fraction`` and ``seed``. The particles start on a lattice
+    The arguments are the options of ``hypergas run --engine edmd``, with its defaults and
+    checks (listed below, from the command's option table). The particles start on a lattice
     at ``packing``, or at ``start_packing`` and then compressed (Lubachevsky-Stillinger) to
     ``packing``: a dense fluid rather than a crystal; a dense start takes a while. From
     packing 0.43 on in 3D the engine scans neighbour lists, below it cells.
@@ -263,13 +245,10 @@ class EDMD(_Engine):
 
     _kind = "edmd"
 
-    def __init__(self, dim=3, n=10000, *, packing=None, start_packing=None, init=None,
-                 seed=None, mass_ratio=None, fraction=None):
-        super().__init__(_hypergas.make_edmd(dim=dim, n=n, packing=packing,
-                                             start_packing=start_packing, init=init,
-                                             seed=seed, mass_ratio=mass_ratio,
-                                             fraction=fraction))
-        self.seed = 1 if seed is None else int(seed)
+    def __init__(self, *args, **kwargs):
+        given = _given(EDMD, args, kwargs)
+        super().__init__(_hypergas.make_edmd(**given))
+        self.seed = int(given.get("seed", _DEFAULTS["edmd"]["seed"]))
 
     @property
     def positions(self):
@@ -327,3 +306,56 @@ class EDMD(_Engine):
     def reset_observables(self):
         """Starts a new measurement window for pressure_Z and the collision rate."""
         _hypergas.reset_observables(self._h)
+
+
+# ---- the constructors' arguments, from the command's option table -----------------------
+_POSITIONAL = ("dim", "n")  # may also be given by position: DSMC(3, 1000)
+_TABLE = _hypergas.option_table()
+_DEFAULTS = {e: {o["python"]: o["default"][e] for o in _TABLE if e in o["default"]}
+             for e in ("dsmc", "edmd")}
+
+
+def _engine_options(kind):
+    return [o for o in _TABLE if kind in o["engines"] and o["use"] == "engine"]
+
+
+def _signature(kind, extra=()):
+    P = inspect.Parameter
+    params = [P("self", P.POSITIONAL_OR_KEYWORD)]
+    for o in _engine_options(kind):
+        how = P.POSITIONAL_OR_KEYWORD if o["python"] in _POSITIONAL else P.KEYWORD_ONLY
+        default = None if o["unset"] else o["default"][kind]
+        params.append(P(o["python"], how, default=default))
+    params += [P(name, P.KEYWORD_ONLY, default=d) for name, d in extra]
+    return inspect.Signature(params)
+
+
+def _doc(kind):
+    lines = ["", "    Parameters (``hypergas run --engine %s``; None or not given: the default)"
+             % kind, "    " + "-" * 40]
+    for o in _engine_options(kind):
+        default = o["unset"] or repr(o["default"][kind])
+        lines.append(f"    {o['python']} : {o['type']}, default {default}")
+        unit = f" [{o['unit']}]" if o["unit"] else ""
+        lines.append(f"        {o['help']}{unit}")
+    return "\n".join(lines) + "\n"
+
+
+def _given(cls, args, kwargs):
+    """The arguments the caller gave (by position or keyword), as keywords."""
+    bound = cls.__init__.__signature__.bind(None, *args, **kwargs)
+    return {k: v for k, v in bound.arguments.items()
+            if k not in ("self", "scheme", "dt") and v is not None}
+
+
+DSMC.__init__.__signature__ = _signature("dsmc", (("scheme", "exact"), ("dt", 0.01)))
+DSMC.from_velocities.__func__.__signature__ = inspect.Signature(
+    [inspect.Parameter("cls", inspect.Parameter.POSITIONAL_OR_KEYWORD),
+     inspect.Parameter("velocities", inspect.Parameter.POSITIONAL_OR_KEYWORD),
+     inspect.Parameter("species", inspect.Parameter.KEYWORD_ONLY, default=None)]
+    + [p.replace(kind=inspect.Parameter.KEYWORD_ONLY)
+       for p in _signature("dsmc", (("scheme", "exact"), ("dt", 0.01))).parameters.values()
+       if p.name in _hypergas.given_velocity_keywords() or p.name in ("scheme", "dt")])
+DSMC.__doc__ += _doc("dsmc")
+EDMD.__init__.__signature__ = _signature("edmd")
+EDMD.__doc__ += _doc("edmd")

@@ -57,9 +57,9 @@ std::unique_ptr<EngineBox> dsmc_from(const py::handle& velocities, const py::han
   py::kwargs all = kw;
   all["n"] = py::int_(v.shape(0));
   all["dim"] = py::int_(v.shape(1));
-  cli::RunOptions o = run_options(registry::EngineKind::dsmc, all,
-                                  {"n", "dim", "model", "vhs_exponent", "seed", "threads",
-                                   "mass_ratio"});
+  std::vector<std::string> allowed = engine_keywords(registry::EngineKind::dsmc, true);
+  allowed.insert(allowed.end(), {"n", "dim"});
+  options::RunOptions o = run_options(registry::EngineKind::dsmc, all, allowed);
   const auto n = static_cast<std::size_t>(v.shape(0));
   const int dim = static_cast<int>(v.shape(1));
   const double* x = v.data();
@@ -74,28 +74,13 @@ std::unique_ptr<EngineBox> dsmc_from(const py::handle& velocities, const py::han
         throw InvalidInput("species must be 0 or 1 (particle " + std::to_string(i) + ")");
       sp.push_back(static_cast<std::uint8_t>(a.data()[i]));
     }
-    if (!cli::two_species(o))
+    if (!options::two_species(o))
       throw InvalidInput("species needs mass_ratio != 1 (the mass of species 1)");
-  } else if (cli::two_species(o)) {
+  } else if (options::two_species(o)) {
     throw InvalidInput("mass_ratio needs species (which particles have that mass)");
   }
-  // The time unit assumes the centre-of-mass frame (dsmc/time_unit.hpp).
-  std::vector<long double> p(static_cast<std::size_t>(dim), 0.0L);
-  long double mass = 0.0L, mv2 = 0.0L;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double m = sp.empty() || sp[i] == 0 ? 1.0 : o.mass_ratio;
-    mass += m;
-    for (int k = 0; k < dim; ++k) {
-      p[static_cast<std::size_t>(k)] += m * x[i * dim + k];
-      mv2 += m * x[i * dim + k] * x[i * dim + k];
-    }
-  }
-  long double p2 = 0.0L;
-  for (long double pk : p) p2 += pk * pk;
-  if (!(mv2 > 0.0L)) throw InvalidInput("velocities must not all be zero");
-  if (std::sqrt(static_cast<double>(p2)) > 1e-9 * std::sqrt(static_cast<double>(mass * mv2)))
-    throw InvalidInput("the total momentum must be zero (the time unit is defined in the "
-                       "centre-of-mass frame): subtract the mass-weighted mean velocity");
+  // The engine refuses a non-zero total momentum (dsmc/time_unit.hpp: the time unit is
+  // defined in the centre-of-mass frame).
   const GivenVelocities given{x, n, sp.empty() ? nullptr : sp.data()};
   return dsmc_box(make_dsmc(o, scheme, dt, &given), o.threads);
 }
@@ -144,13 +129,13 @@ void bind_engines(py::module_& m) {
       });
 
   m.def("make_dsmc", [](const std::string& scheme, double dt, const py::kwargs& kw) {
-    const cli::RunOptions o = run_options(registry::EngineKind::dsmc, kw, dsmc_keywords);
+    const options::RunOptions o = run_options(registry::EngineKind::dsmc, kw, engine_keywords(registry::EngineKind::dsmc, false));
     return dsmc_box(make_dsmc(o, scheme, dt), o.threads);
   }, py::arg("scheme") = "exact", py::arg("dt") = 0.01);
   m.def("make_dsmc_from", &dsmc_from, py::arg("velocities"), py::arg("species") = py::none(),
         py::arg("scheme") = "exact", py::arg("dt") = 0.01);
   m.def("make_edmd", [](const py::kwargs& kw) {
-    const cli::RunOptions o = run_options(registry::EngineKind::edmd, kw, edmd_keywords);
+    const options::RunOptions o = run_options(registry::EngineKind::edmd, kw, engine_keywords(registry::EngineKind::edmd, false));
     auto box = std::make_unique<EngineBox>();
     {
       py::gil_scoped_release nogil;  // a dense start compresses for a while
@@ -161,7 +146,7 @@ void bind_engines(py::module_& m) {
   m.def("set_threads", [](EngineBox& b, const py::object& t) {
     b.idle();
     const long long k = as_integer("threads", t);
-    if (k < 1 || k > 64) throw InvalidInput("--threads must be in 1..64, got " + std::to_string(k));
+    options::check_threads(k, "--threads");
     dsmc_of(b).set_threads(static_cast<int>(k));
   });
   m.def("threads", [](const EngineBox& b) { return dsmc_of(b).threads(); });

@@ -17,6 +17,7 @@
 #include "hypergas/analysis/moments_recorder.hpp"
 #include "hypergas/analysis/vacf_recorder.hpp"
 #include "hypergas/error.hpp"
+#include "hypergas/options/run_options.hpp"
 #include "hypergas/observer.hpp"
 
 namespace hypergas::python {
@@ -52,7 +53,7 @@ void bind_observers(py::module_& m) {
                throw InvalidInput("bins must be in 1..1e8, got " + std::to_string(b));
              if (k < 1) throw InvalidInput("ks_sample must be >= 1, got " + std::to_string(k));
              const long long t = as_integer("threads", threads);
-             if (t < 1 || t > 64) throw InvalidInput("threads must be in 1..64, got " + std::to_string(t));
+             options::check_threads(t, "threads");
              auto r = std::make_unique<analysis::MomentsRecorder>(
                  static_cast<std::size_t>(b), static_cast<std::size_t>(k), as_seed(ks_seed));
              r->set_threads(static_cast<int>(t));

@@ -9,6 +9,7 @@
 #include "bindings.hpp"
 #include "convert.hpp"
 #include "hypergas/error.hpp"
+#include "hypergas/options/run_options.hpp"
 #include "hypergas/studies/report.hpp"
 
 namespace hypergas::python {
@@ -19,7 +20,7 @@ void bind_report(py::module_& m) {
     o.quick = quick;
     o.seed = as_seed(seed);
     const long long t = as_integer("threads", threads);
-    if (t < 1 || t > 64) throw InvalidInput("threads must be in 1..64, got " + std::to_string(t));
+    options::check_threads(t, "threads");
     o.threads = static_cast<int>(t);
     o.plot = false;
     o.verbose = false;

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "hypergas/observer.hpp"
-#include "options.hpp"
+#include "hypergas/options/run_options.hpp"
 
 namespace hypergas::python {
 
@@ -100,18 +100,18 @@ struct GivenVelocities {
 /// Builds the engine that validated options `o` (engine dsmc) describe, with the time
 /// scheme and NTC step given; from `given` velocities instead of o's initial state when
 /// set. Throws InvalidInput for parameters the engine rejects.
-std::unique_ptr<DsmcHandle> make_dsmc(const cli::RunOptions& o, const std::string& scheme,
+std::unique_ptr<DsmcHandle> make_dsmc(const options::RunOptions& o, const std::string& scheme,
                                       double dt, const GivenVelocities* given = nullptr);
 /// The same for the EDMD engine (engine edmd).
-std::unique_ptr<EdmdHandle> make_edmd(const cli::RunOptions& o);
+std::unique_ptr<EdmdHandle> make_edmd(const options::RunOptions& o);
 
 namespace detail {
 // Defined in handles.hpp, instantiated once per dimension (handles_dim.cpp.in).
 template <int D>
-std::unique_ptr<DsmcHandle> make_dsmc_dim(const cli::RunOptions& o, const dsmc::Config& cfg,
+std::unique_ptr<DsmcHandle> make_dsmc_dim(const options::RunOptions& o, const dsmc::Config& cfg,
                                           const GivenVelocities* given);
 template <int D>
-std::unique_ptr<EdmdHandle> make_edmd_dim(const cli::RunOptions& o, const edmd::Config& cfg);
+std::unique_ptr<EdmdHandle> make_edmd_dim(const options::RunOptions& o, const edmd::Config& cfg);
 }  // namespace detail
 
 }  // namespace hypergas::python

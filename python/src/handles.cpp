@@ -6,9 +6,9 @@
 
 namespace hypergas::python {
 
-std::unique_ptr<DsmcHandle> make_dsmc(const cli::RunOptions& o, const std::string& scheme,
+std::unique_ptr<DsmcHandle> make_dsmc(const options::RunOptions& o, const std::string& scheme,
                                       double dt, const GivenVelocities* given) {
-  dsmc::Config cfg = cli::dsmc_config(o);
+  dsmc::Config cfg = options::dsmc_config(o);
   cfg.scheme = registry::scheme(scheme);
   cfg.dt = dt;
   dsmc::validate(cfg);
@@ -17,8 +17,8 @@ std::unique_ptr<DsmcHandle> make_dsmc(const cli::RunOptions& o, const std::strin
       registry::dimension(o.dim));
 }
 
-std::unique_ptr<EdmdHandle> make_edmd(const cli::RunOptions& o) {
-  const edmd::Config cfg = cli::edmd_config(o);
+std::unique_ptr<EdmdHandle> make_edmd(const options::RunOptions& o) {
+  const edmd::Config cfg = options::edmd_config(o);
   return registry::dispatch(
       [&](auto dim) { return detail::make_edmd_dim<decltype(dim)::type::value>(o, cfg); },
       registry::dimension(o.dim));

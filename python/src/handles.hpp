@@ -154,7 +154,7 @@ Store given_particles(const GivenVelocities& given, double mass_ratio) {
 }
 
 template <int D>
-std::unique_ptr<DsmcHandle> make_dsmc_dim(const cli::RunOptions& o, const dsmc::Config& cfg,
+std::unique_ptr<DsmcHandle> make_dsmc_dim(const options::RunOptions& o, const dsmc::Config& cfg,
                                           const GivenVelocities* given) {
   return registry::dispatch(
       [&](auto model, auto species) -> std::unique_ptr<DsmcHandle> {
@@ -164,17 +164,17 @@ std::unique_ptr<DsmcHandle> make_dsmc_dim(const cli::RunOptions& o, const dsmc::
         using Store = Particles<D, Features{.species = decltype(species)::type::value}>;
         return std::make_unique<Handle>(cfg, given_particles<Store>(*given, o.mass_ratio));
       },
-      registry::model(o.model), registry::species(cli::two_species(o)));
+      registry::model(o.model), registry::species(options::two_species(o)));
 }
 
 template <int D>
-std::unique_ptr<EdmdHandle> make_edmd_dim(const cli::RunOptions& o, const edmd::Config& cfg) {
+std::unique_ptr<EdmdHandle> make_edmd_dim(const options::RunOptions& o, const edmd::Config& cfg) {
   return registry::dispatch(
       [&](auto species, auto dense) -> std::unique_ptr<EdmdHandle> {
         using Scan = registry::RegimeScan<typename decltype(dense)::type, D>;
         return std::make_unique<Edmd<D, decltype(species)::type::value, Scan>>(cfg);
       },
-      registry::species(cli::two_species(o)), registry::regime(D, cfg.packing));
+      registry::species(options::two_species(o)), registry::regime(D, cfg.packing));
 }
 
 }  // namespace hypergas::python::detail

@@ -1,51 +1,115 @@
-// python/src/keywords.cpp -- the keyword lists of hypergas.DSMC / hypergas.EDMD and
-// run_options: keyword arguments -> cli::RunOptions (keywords.hpp).
+// python/src/keywords.cpp -- keyword arguments -> options::RunOptions through the option
+// table, and the table and the sampling schedule for the Python package (keywords.hpp).
 #include "keywords.hpp"
+
+#include <pybind11/stl.h>
 
 #include <algorithm>
 
 #include "convert.hpp"
+#include "hypergas/schedule.hpp"
 
 namespace hypergas::python {
 
-const std::vector<std::string> dsmc_keywords = {"dim",         "n",           "model",
-                                                "vhs_exponent", "init",       "mass_ratio",
-                                                "fraction",     "temperature", "seed",
-                                                "threads"};
-const std::vector<std::string> edmd_keywords = {"dim",        "n",        "packing",
-                                                "start_packing", "init", "mass_ratio",
-                                                "fraction",   "seed"};
+namespace {
+/// Sets `opt` from a Python value, converted by the option's type.
+void set_value(options::RunOptions& o, const options::Option& opt, const py::handle& value) {
+  const std::string k = options::python_name(opt);
+  const std::string_view t = options::type_name(opt);
+  if (t == "NUM") options::set_real(o, opt, as_real(k, value));
+  else if (t == "UINT") options::set_unsigned(o, opt, as_seed(value));
+  else if (t == "TEXT") options::set_string(o, opt, as_text(k, value));
+  else if (t == "FLAG") {
+    if (!PyBool_Check(value.ptr())) type_error(k + " must be True or False");
+    options::set_flag(o, opt, value.cast<bool>());
+  } else {
+    options::set_integer(o, opt, as_integer(k, value));
+  }
+}
 
-cli::RunOptions run_options(registry::EngineKind kind, const py::kwargs& kw,
-                            const std::vector<std::string>& allowed) {
-  cli::RunOptions o;
-  o.engine = std::string(registry::name(kind));
-  o.out = "python";  // no output folder: the module writes nothing by itself
+py::object python_value(const options::RunOptions& o, const options::Option& opt) {
+  return std::visit([&](auto m) { return py::cast(o.*m); }, opt.field);
+}
+
+const char* use_name(options::Use u) {
+  switch (u) {
+    case options::Use::engine: return "engine";
+    case options::Use::span: return "span";
+    default: return "command";
+  }
+}
+}  // namespace
+
+std::vector<std::string> engine_keywords(registry::EngineKind kind, bool given_velocities) {
+  std::vector<std::string> k;
+  for (const options::Option& opt : options::run_table()) {
+    if (opt.use != options::Use::engine || !options::applies(opt, kind)) continue;
+    if (given_velocities && (opt.initial_state || opt.name == "dim" || opt.name == "n"))
+      continue;
+    k.push_back(options::python_name(opt));
+  }
+  return k;
+}
+
+options::RunOptions run_options(registry::EngineKind kind, const py::kwargs& kw,
+                                const std::vector<std::string>& allowed) {
+  options::RunOptions o = options::defaults(kind);
   for (const auto& [key, value] : kw) {
     const std::string k = py::str(key);
     if (std::find(allowed.begin(), allowed.end(), k) == allowed.end())
       type_error("unexpected keyword argument '" + k + "'");
     if (value.is_none()) continue;  // not given: the default
-    std::string option = "--" + k;
-    for (char& c : option)
-      if (c == '_') c = '-';
-    o.given.push_back(option);
-    if (k == "dim") o.dim = static_cast<int>(std::clamp<long long>(as_integer(k, value), -1, 1000));
-    else if (k == "n") o.n = as_integer(k, value);
-    else if (k == "model") o.model = as_text(k, value);
-    else if (k == "init") o.init = as_text(k, value);
-    else if (k == "vhs_exponent") o.vhs_exponent = as_real(k, value);
-    else if (k == "packing") o.packing = as_real(k, value);
-    else if (k == "start_packing") o.start_packing = as_real(k, value);
-    else if (k == "mass_ratio") o.mass_ratio = as_real(k, value);
-    else if (k == "fraction") o.fraction = as_real(k, value);
-    else if (k == "temperature") o.temperature = as_real(k, value);
-    else if (k == "seed") o.seed = as_seed(value);
-    else if (k == "threads")
-      o.threads = static_cast<int>(std::clamp<long long>(as_integer(k, value), -1, 100000));
+    set_value(o, *options::find(k), value);
   }
-  cli::validate(o);
+  options::validate(o);
   return o;
+}
+
+void bind_options(py::module_& m) {
+  m.def("option_table", [] {
+    py::list rows;
+    const options::RunOptions d = options::defaults(registry::EngineKind::dsmc);
+    const options::RunOptions e = options::defaults(registry::EngineKind::edmd);
+    for (const options::Option& opt : options::run_table()) {
+      py::list engines;
+      py::dict defaults;
+      for (const auto& [kind, r] : {std::pair{registry::EngineKind::dsmc, &d},
+                                    std::pair{registry::EngineKind::edmd, &e}})
+        if (options::applies(opt, kind)) {
+          engines.append(std::string(registry::name(kind)));
+          defaults[py::str(std::string(registry::name(kind)))] = python_value(*r, opt);
+        }
+      std::string help(opt.help);
+      if (opt.details) help += " " + opt.details();
+      py::dict row;
+      row["name"] = options::cli_name(opt), row["python"] = options::python_name(opt);
+      row["engines"] = engines, row["use"] = use_name(opt.use);
+      row["type"] = std::string(options::type_name(opt)), row["default"] = defaults;
+      row["unit"] = std::string(opt.unit), row["help"] = help;
+      row["unset"] = std::string(opt.unset), row["initial_state"] = opt.initial_state;
+      rows.append(row);
+    }
+    return rows;
+  }, "The run options of the command's table: name, Python name, engines, use, type, "
+     "default per engine, unit, help.");
+  m.def("check_option", [](const std::string& engine, const std::string& name,
+                           const py::handle& value) {
+    const options::Option* opt = options::find(name);
+    if (!opt) throw std::invalid_argument("no option " + name);
+    options::RunOptions o = options::defaults(registry::engine(engine));
+    set_value(o, *opt, value);
+  }, "Checks one value against its option's type and range (ValueError/TypeError).");
+  m.def("given_velocity_keywords",
+        [] { return engine_keywords(registry::EngineKind::dsmc, true); });
+  py::class_<Schedule>(m, "Schedule", "The sampling instants of a run (hypergas/schedule.hpp)")
+      .def(py::init([](double t0, double until, double every) {
+             return Schedule::make(t0, until, every);
+           }),
+           py::arg("t0"), py::arg("until"), py::arg("every") = 0.0)
+      .def_property_readonly("rows", &Schedule::rows)
+      .def_property_readonly("intervals", &Schedule::intervals)
+      .def_property_readonly("every", &Schedule::every)
+      .def("time", &Schedule::time, py::arg("k"));
 }
 
 }  // namespace hypergas::python

@@ -3,8 +3,8 @@
 // (python/hypergas/__init__.py) builds the public API on top of it.
 //
 // Conventions of the bindings:
-//  - Options are validated by the command's own code (sim/options.cpp, cli::validate), so
-//    a bad value gets the command's message with the Python spelling of the option
+//  - Options are the command's option table (hypergas/options/table.hpp), set and
+//    validated by the same code as the command's (keywords.hpp), so a bad value gets the command's message with the Python spelling of the option
 //    ("--mass-ratio" becomes "mass_ratio"); InvalidInput becomes ValueError, a value of
 //    the wrong type TypeError (convert.hpp, keywords.hpp).
 //  - Per-particle arrays are numpy views of the engine's memory (no copy), read-only, and
@@ -18,6 +18,7 @@
 #include <exception>
 
 #include "bindings.hpp"
+#include "keywords.hpp"
 #include "convert.hpp"
 #include "hypergas/error.hpp"
 
@@ -38,4 +39,5 @@ PYBIND11_MODULE(_hypergas, m) {
   bind_observers(m);
   bind_engines(m);
   bind_report(m);
+  bind_options(m);
 }

@@ -23,6 +23,7 @@ void check_rate(double a) {
   // block should be 5 (2 * collisions / N per unit time = 1). Block means are independent to
   // a good approximation (correlation time ~1); t test with false-failure 1e-5 per case.
   Config cfg;
+  cfg.init = InitialState::maxwell;
   cfg.n = 10000;
   cfg.seed = 300 + D;
   cfg.vhs_exponent = a;
@@ -89,6 +90,7 @@ TEMPLATE_TEST_CASE_SIG("A Maxwellian stays Maxwellian", "[dsmc][physics]", ((int
   // At 5 times the speed law passes KS (p > 1e-5 each) and m4 stays at D (D+2) (kT/m)^2
   // within 5 standard errors sd(|v|^4)/sqrt(N) (false failure < 1e-5 over the test).
   Config cfg;
+  cfg.init = InitialState::maxwell;
   cfg.n = 20000;
   cfg.seed = 500 + D;
   Engine<D, HardSpheres> e(cfg);

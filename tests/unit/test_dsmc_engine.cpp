@@ -60,6 +60,7 @@ TEMPLATE_TEST_CASE_SIG("DSMC conserves momentum and energy to round-off", "[dsmc
 
 TEST_CASE("DSMC observers: called at multiples of every, never between", "[dsmc]") {
   Config cfg;
+  cfg.init = InitialState::maxwell;
   cfg.n = 1000;
   Engine<3, HardSpheres> e(cfg);
   Recorder rec;
@@ -94,6 +95,7 @@ TEST_CASE("DSMC species snapshots carry species and masses", "[dsmc]") {
     }
   } chk;
   Config cfg;
+  cfg.init = InitialState::maxwell;
   cfg.n = 100;
   cfg.initial.mass_ratio = 4.0;
   cfg.initial.fraction = 0.5;

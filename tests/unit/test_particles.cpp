@@ -48,10 +48,7 @@ static_assert(HasPosition<3, with_positions>);
 static_assert(!HasSpeciesMass<3, velocity_only>);
 static_assert(HasSpeciesMass<3, everything>);
 static_assert(!HasSpecies<2, with_positions>);
-// Features::masses and ::radii have no storage: Particles refuses them.
 static_assert(Storable<3, everything>);
-static_assert(!Storable<3, Features{.masses = true}>);
-static_assert(!Storable<3, Features{.positions = true, .radii = true}>);
 static_assert(Plain3::stride == 4 && Particles<6>::stride == 8 && Particles<1>::stride == 1);
 
 TEST_CASE("equal-mass 3D velocity storage uses 32 bytes per particle", "[particles]") {

@@ -72,6 +72,7 @@
 #include "hypergas/observer.hpp"
 #include "hypergas/particles.hpp"
 #include "hypergas/rng.hpp"
+#include "hypergas/schedule.hpp"
 
 namespace hypergas::dsmc {
 
@@ -79,8 +80,7 @@ namespace hypergas::dsmc {
 /// or Features{.species = true}). Time in equilibrium mean collision times.
 // clang-format off
 template <int D, class Model, Features F = Features{}>
-  requires Dimension<D> && CollisionModel<Model> && (!F.positions) && (!F.masses) &&
-           (!F.radii)
+  requires Dimension<D> && CollisionModel<Model> && (!F.positions)
 class Engine {
   // clang-format on
  public:
@@ -144,9 +144,9 @@ class Engine {
   }
 
   /// Advances the process to time t (mean collision times; engine_concept.hpp). With an
-  /// observer, calls obs->observe at t0, t0 + every, ... <= t, t0 = time() at the call
-  /// (a grid point within 1e-9 every above t is taken at t; an instant observed by the
-  /// previous call is not observed again). Throws InvalidInput if t is not finite or before
+  /// observer, calls obs->observe at the instants of Schedule::make(time(), t, every)
+  /// (schedule.hpp: evenly spaced, the last at t; an instant observed by the previous call
+  /// is not observed again). Throws InvalidInput if t is not finite or before
   /// time(), or if obs is set and every is not finite and > 0.
   void run_until(double t, Observer* obs = nullptr, double every = 0.0) {
     if (obs && !(every > 0.0 && std::isfinite(every)))
@@ -159,14 +159,9 @@ class Engine {
       advance_to(t);
       return;
     }
-    const double t0 = s_.time;
-    for (std::uint64_t k = 0;; ++k) {
-      double tk = t0 + static_cast<double>(k) * every;
-      if (tk > t) {
-        if (tk - t > 1e-9 * every) break;
-        tk = t;
-      }
-      advance_to(tk);
+    const Schedule plan = Schedule::make(s_.time, t, every);
+    for (std::uint64_t k = 0; k <= plan.intervals(); ++k) {
+      advance_to(plan.time(k));
       if (s_.observed_at != s_.time) {
         observe(*obs);
         s_.observed_at = s_.time;

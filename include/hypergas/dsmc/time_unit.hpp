@@ -42,7 +42,6 @@ double equilibrium_temperature(const Particles<D, F>& p) {
 /// the particles' conserved energy and species composition.
 template <int D, Features F>
 double rate_constant(const Particles<D, F>& p, double a) {
-  static_assert(!F.masses, "per-particle masses: use species for DSMC mixtures");
   const double n = static_cast<double>(p.size());
   if (p.size() < 2) throw InvalidInput("DSMC needs at least 2 particles");
   const double kT = equilibrium_temperature(p);

@@ -20,7 +20,7 @@ template <int D, Features F, class VI, class VJ>
 [[gnu::always_inline]] inline void apply_deflection(const Particles<D, F>& p, std::uint32_t i,
                                                 std::uint32_t j, VI&& vi,
                                                 VJ&& vj, const Vec<D>& dg) {
-  constexpr bool equal_masses = !F.species && !F.masses;
+  constexpr bool equal_masses = !F.species;
   if constexpr (equal_masses && D == 1) {
     if (dg[0] != 0.0) std::swap(vi[0], vj[0]);
   } else {

@@ -39,6 +39,7 @@
 #include "hypergas/error.hpp"
 #include "hypergas/observer.hpp"
 #include "hypergas/particles.hpp"
+#include "hypergas/schedule.hpp"
 
 namespace hypergas::edmd {
 
@@ -94,9 +95,10 @@ class Engine {
 
   // ---- running ------------------------------------------------------------------------
   /// Processes all events up to time t (sigma sqrt(m/kT)); time() == t afterwards. If obs is
-  /// non-null it is called at times t0, t0 + every, t0 + 2 every, ... <= t (t0 = time() at
-  /// the call) with velocities and unwrapped positions. Throws InvalidInput if t is not
-  /// finite or t < time(), or if obs is non-null and `every` is not finite and > 0.
+  /// non-null it is called at the instants of Schedule::make(time(), t, every) (schedule.hpp:
+  /// evenly spaced from the time at the call, the last at t) with velocities and unwrapped
+  /// positions. Throws InvalidInput if t is not finite or t < time(), or if obs is non-null
+  /// and `every` is not finite and > 0.
   void run_until(double t, Observer* obs = nullptr, double every = 0.0) {
     if (obs && !(every > 0.0 && std::isfinite(every)))
       throw InvalidInput("sampling interval must be finite and > 0");
@@ -105,14 +107,14 @@ class Engine {
     if (!(t >= s_.now))
       throw InvalidInput("run_until(" + std::to_string(t) + "): the gas is already at t = " +
                          std::to_string(s_.now));
-    double next_sample = obs ? s_.now : never;
+    const Schedule plan = obs ? Schedule::make(s_.now, t, every) : Schedule{};
     std::uint64_t k = 0;
-    const double t0 = s_.now;
+    double next_sample = obs ? plan.time(0) : never;
     for (;;) {
       const double te = q_.top_time();
-      while (obs && next_sample <= t && next_sample <= te) {
+      while (obs && next_sample <= te) {
         sample(next_sample, *obs);
-        next_sample = t0 + static_cast<double>(++k) * every;
+        next_sample = ++k <= plan.intervals() ? plan.time(k) : never;
       }
       if (te > t) break;
       step();

@@ -48,8 +48,10 @@
 
 namespace hypergas::checkpoint {
 
-/// Version of the file layout and of every class's io() list; a reader refuses other versions.
-inline constexpr std::uint32_t format_version = 1;
+/// Version of the file layout and of every class's io() list; a reader refuses other versions
+/// (naming both). Raised by one on every change of the layout or of any io() list, however
+/// small (docs/checkpoints.md keeps the history).
+inline constexpr std::uint32_t format_version = 3;
 
 namespace detail {
 
@@ -336,8 +338,9 @@ inline Reader::Reader(std::string path) : path_(std::move(path)) {
   std::memcpy(&payload, head + 16, 8);
   if (order != detail::order_mark) fail("written on a machine of other byte order");
   if (version != format_version)
-    fail("format version " + std::to_string(version) + ", this hypergas reads version " +
-         std::to_string(format_version));
+    fail("checkpoint format " + std::to_string(version) + ", this build reads format " +
+         std::to_string(format_version) +
+         "; continue the run with the build that wrote it, or start it again");
   if (payload != static_cast<std::uint64_t>(size) - detail::header_bytes - detail::trailer_bytes)
     fail("truncated or extended: its size does not match its header");
   // Checksum pass over the header (without the size field) and the payload.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -23,6 +25,7 @@ namespace fs = std::filesystem;
 /// What a finished run of the command left: exit code (128 + signal if killed) and output.
 struct Result {
   int code = -1;
+  int signal = 0;  // the signal that ended the command, 0 if it exited
   std::string out, err;
 };
 
@@ -60,52 +63,139 @@ class Scratch {
   fs::path path_;
 };
 
-/// Runs `hypergas args...` in folder `cwd`; if `signal_after_s` > 0 and the command still
-/// runs after that many seconds, sends it `sig` (SIGINT: Ctrl-C; SIGKILL: a kill). stdin is
-/// /dev/null, so stderr is not a terminal (no progress bar).
-inline Result run(const std::vector<std::string>& args, const fs::path& cwd,
-                  double signal_after_s = 0.0, int sig = SIGINT) {
-  const fs::path out = cwd / ".stdout.txt", err = cwd / ".stderr.txt";
-  std::vector<std::string> argv_s{HYPERGAS_CLI_PATH};
-  argv_s.insert(argv_s.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : argv_s) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    const int fo = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int fe = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int fi = ::open("/dev/null", O_RDONLY);
-    if (fo < 0 || fe < 0 || fi < 0 || ::chdir(cwd.c_str()) != 0) ::_exit(126);
-    ::dup2(fi, 0);
-    ::dup2(fo, 1);
-    ::dup2(fe, 2);
-    ::execv(argv[0], argv.data());
-    ::_exit(127);
+/// A running `hypergas args...` in folder `cwd`, stdin /dev/null (so stderr is not a
+/// terminal: no progress bar), stdout and stderr captured in files of `cwd`. The tests send
+/// it a signal only once a readiness signal holds (wait_until), never after a guessed time.
+/// A child still running at destruction is killed (SIGKILL) and reaped.
+class Child {
+ public:
+  Child(const std::vector<std::string>& args, const fs::path& cwd) {
+    static int counter = 0;
+    const std::string tag = std::to_string(::getpid()) + "-" + std::to_string(counter++);
+    out_ = cwd / (".stdout-" + tag + ".txt");
+    err_ = cwd / (".stderr-" + tag + ".txt");
+    std::vector<std::string> argv_s{HYPERGAS_CLI_PATH};
+    argv_s.insert(argv_s.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (auto& a : argv_s) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const std::string cwd_s = cwd.string(), out_s = out_.string(), err_s = err_.string();
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      const int fo = ::open(out_s.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      const int fe = ::open(err_s.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      const int fi = ::open("/dev/null", O_RDONLY);
+      if (fo < 0 || fe < 0 || fi < 0 || ::chdir(cwd_s.c_str()) != 0) ::_exit(126);
+      ::dup2(fi, 0);
+      ::dup2(fo, 1);
+      ::dup2(fe, 2);
+      ::execv(argv[0], argv.data());
+      ::_exit(127);
+    }
   }
-  int status = 0;
-  if (signal_after_s > 0.0) {
+  Child(const Child&) = delete;
+  Child& operator=(const Child&) = delete;
+  ~Child() {
+    if (pid_ > 0 && !reaped_) {
+      ::kill(pid_, SIGKILL);
+      ::waitpid(pid_, &status_, 0);
+    }
+    std::error_code ec;
+    fs::remove(out_, ec);
+    fs::remove(err_, ec);
+  }
+
+  pid_t pid() const { return pid_; }
+
+  /// Whether the command still runs (reaps it if it has ended).
+  bool running() {
+    if (reaped_ || pid_ <= 0) return false;
+    if (::waitpid(pid_, &status_, WNOHANG) == pid_) reaped_ = true;
+    return !reaped_;
+  }
+
+  /// Polls `ready()` every millisecond while the command runs. Returns true as soon as it
+  /// holds with the command still running; false if the command ended first or `limit_s`
+  /// passed (the command is then left running; wait() or the destructor ends it).
+  template <class Ready>
+  bool wait_until(Ready&& ready, double limit_s = 300.0) {
     const auto start = std::chrono::steady_clock::now();
     for (;;) {
-      if (::waitpid(pid, &status, WNOHANG) == pid) break;
+      if (!running()) return false;
+      if (ready()) return running();
       const std::chrono::duration<double> t = std::chrono::steady_clock::now() - start;
-      if (t.count() >= signal_after_s) {
-        ::kill(pid, sig);
-        ::waitpid(pid, &status, 0);
-        break;
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      if (t.count() > limit_s) return false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
-  } else {
-    ::waitpid(pid, &status, 0);
   }
-  Result r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  r.out = slurp(out);
-  r.err = slurp(err);
-  fs::remove(out);
-  fs::remove(err);
-  return r;
+
+  /// Waits `seconds` of wall time, or less if the command ends; returns whether it still runs.
+  bool running_after(double seconds) {
+    const auto start = std::chrono::steady_clock::now();
+    while (running()) {
+      const std::chrono::duration<double> t = std::chrono::steady_clock::now() - start;
+      if (t.count() >= seconds) return true;
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    return false;
+  }
+
+  void signal(int sig) {
+    if (running()) ::kill(pid_, sig);
+  }
+
+  /// Waits for the command to end and returns its exit code and output.
+  Result wait() {
+    if (!reaped_ && pid_ > 0) {
+      ::waitpid(pid_, &status_, 0);
+      reaped_ = true;
+    }
+    Result r;
+    r.signal = WIFSIGNALED(status_) ? WTERMSIG(status_) : 0;
+    r.code = WIFEXITED(status_) ? WEXITSTATUS(status_) : 128 + r.signal;
+    r.out = slurp(out_);
+    r.err = slurp(err_);
+    return r;
+  }
+
+ private:
+  pid_t pid_ = -1;
+  int status_ = 0;
+  bool reaped_ = false;
+  fs::path out_, err_;
+};
+
+/// Runs `hypergas args...` in folder `cwd` to its end.
+inline Result run(const std::vector<std::string>& args, const fs::path& cwd) {
+  return Child(args, cwd).wait();
+}
+
+/// The identity of a file's current content as the tests see it (inode, modification time
+/// to the nanosecond, size), or all zeros if it does not exist. A checkpoint is written to a
+/// temporary file and renamed over the previous one, so each new checkpoint changes it.
+struct FileStamp {
+  std::uint64_t ino = 0, size = 0;
+  std::int64_t sec = 0, nsec = 0;
+  bool operator==(const FileStamp&) const = default;
+  bool exists() const { return ino != 0; }
+};
+
+inline FileStamp stamp(const fs::path& p) {
+  struct ::stat st {};
+  if (::stat(p.c_str(), &st) != 0) return {};
+  return {static_cast<std::uint64_t>(st.st_ino), static_cast<std::uint64_t>(st.st_size),
+          static_cast<std::int64_t>(st.st_mtim.tv_sec),
+          static_cast<std::int64_t>(st.st_mtim.tv_nsec)};
+}
+
+/// Whether `dir` holds a staging folder (.hypergas-staging-<pid>): the command has the
+/// folder's lock (it creates the staging folder right after taking it) and its Ctrl-C
+/// handler is installed (main installs it before any command starts).
+inline bool has_staging(const fs::path& dir) {
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec))
+    if (e.path().filename().string().rfind(".hypergas-staging-", 0) == 0) return true;
+  return false;
 }
 
 /// Lines of a text, without the newline characters.

@@ -2,23 +2,32 @@
 // resumed writes the same files, byte for byte, as the same run never interrupted.
 //
 // The kill test: for each engine configuration, a reference run with checkpoints; then the
-// same run started, killed with SIGKILL after a seeded random delay (uniform over the
-// reference's wall time), resumed (`hypergas resume DIR`, or run again when the kill came
-// before the first checkpoint), killed again, ..., until a process finishes. moments.csv,
-// speed_histogram.csv and vacf.csv must equal the reference's byte for byte, and so must every
-// physics field of summary.json (all but the wall-clock and bookkeeping fields). Where the kill
-// lands is random, the assertion is not: a correct program passes for every delay. Also: Ctrl-C
-// writes a checkpoint and says how to resume; corrupted, truncated and foreign checkpoints
-// are refused with exit code 2.
+// same run started and killed with SIGKILL, resumed (`hypergas resume DIR`), killed again,
+// ..., and resumed a last time to its end. Every kill waits on a readiness signal, not on a
+// guessed time: the process must first have written its own checkpoints (one or two, seeded,
+// seen as a new inode/mtime of DIR/checkpoint.hgck), and the kill then lands a seeded random
+// fraction of the interval between its last two checkpoints later, so anywhere in the
+// computation or in the writing of the next checkpoint, but always with a checkpoint to
+// resume from and stops still to go. A run that ends before its kill, or a final
+// summary.json that does not count every resume, fails the test. moments.csv,
+// speed_histogram.csv and vacf.csv must equal the reference's byte for byte, and so must
+// every physics field of summary.json (all but the wall-clock and bookkeeping fields). Where
+// the kill lands is random, the assertion is not: a correct program passes for every delay.
+// Also: Ctrl-C writes a checkpoint and says how to resume; corrupted, truncated, foreign and
+// other-format-version checkpoints are refused with exit code 2 and leave the folder as it
+// was; a second process on a folder in use is refused.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "cli/run_cli.hpp"
+#include "hypergas/checkpoint.hpp"
 
 namespace {
 
@@ -48,39 +57,85 @@ std::string physics_summary(const fs::path& file) {
 
 const std::vector<std::string> compared = {"moments.csv", "speed_histogram.csv", "vacf.csv"};
 
-/// The kill test for one configuration (see the file comment). `kills` SIGKILLs at most.
+/// The integer field `key` of summary.json (one object on one line), or -1 if absent.
+long summary_int(const fs::path& file, const std::string& key) {
+  const std::string text = slurp(file), k = "\"" + key + "\": ";
+  const auto pos = text.find(k);
+  if (pos == std::string::npos) return -1;
+  return std::strtol(text.c_str() + pos + k.size(), nullptr, 10);
+}
+
+/// Waits while `c` runs until `count` new checkpoints have appeared at `ck` (a stamp other
+/// than the last one seen, starting from `seen`). Returns the wall time between the last two
+/// appearances (0 if count is 1), or -1 if the command ended or 300 s passed first.
+double await_checkpoints(Child& c, const fs::path& ck, int count, FileStamp seen) {
+  using Clock = std::chrono::steady_clock;
+  std::vector<Clock::time_point> at;
+  const bool ok = c.wait_until([&] {
+    const FileStamp now = stamp(ck);
+    if (now.exists() && !(now == seen)) {
+      seen = now;
+      at.push_back(Clock::now());
+    }
+    return static_cast<int>(at.size()) >= count;
+  });
+  if (!ok) return -1.0;
+  return at.size() < 2 ? 0.0 : std::chrono::duration<double>(at.back() - at[at.size() - 2]).count();
+}
+
+/// The kill test for one configuration (see the file comment): `kills` SIGKILLs, each
+/// followed by a resume.
 void kill_and_resume(const std::vector<std::string>& run_args, std::uint64_t seed, int kills) {
   Scratch s("ckpt");
   std::vector<std::string> ref_args = {"run"};
   ref_args.insert(ref_args.end(), run_args.begin(), run_args.end());
   ref_args.insert(ref_args.end(), {"--out", "ref"});
-  const auto t0 = std::chrono::steady_clock::now();
   const Result ref = run(ref_args, s.path());
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   INFO("reference: " << ref.err);
   REQUIRE(ref.code == 0);
   REQUIRE(!fs::exists(s.path() / "ref" / "checkpoint.hgck"));  // a finished run removes it
+  // Each process below writes at most 3 checkpoints before its kill (two awaited, then at
+  // most about one interval): the reference must write more than all of them together.
+  const long ref_checkpoints = summary_int(s.path() / "ref" / "summary.json", "checkpoints");
+  REQUIRE(ref_checkpoints > 3 * kills + 1);
 
   std::vector<std::string> fresh = {"run"};
   fresh.insert(fresh.end(), run_args.begin(), run_args.end());
   fresh.insert(fresh.end(), {"--out", "cut"});
   const std::vector<std::string> resume = {"resume", "cut"};
+  const fs::path ck = s.path() / "cut" / "checkpoint.hgck";
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> delay(0.05 * wall, 1.0 * wall);
-  int killed = 0, resumed = 0;
-  Result last;
-  for (int attempt = 0; attempt < kills + 1; ++attempt) {
-    const bool have = fs::exists(s.path() / "cut" / "checkpoint.hgck");
-    const auto& args = have ? resume : fresh;
-    resumed += have ? 1 : 0;
-    last = attempt < kills ? run(args, s.path(), delay(rng), SIGKILL) : run(args, s.path());
-    INFO("attempt " << attempt << ": " << last.err);
-    if (last.code == 0) break;
-    REQUIRE(last.code == 128 + SIGKILL);
-    ++killed;
+  std::uniform_int_distribution<int> awaited(1, 2);
+  std::uniform_real_distribution<double> fraction(0.0, 1.0);
+  for (int attempt = 0; attempt < kills; ++attempt) {
+    // The first process starts the run, every later one resumes the previous one's last
+    // checkpoint.
+    REQUIRE(fs::exists(ck) == (attempt > 0));
+    Child c(attempt == 0 ? fresh : resume, s.path());
+    const int count = awaited(rng);
+    const double u = fraction(rng);
+    const double gap = await_checkpoints(c, ck, count, stamp(ck));
+    if (gap < 0.0) {
+      const Result early = c.wait();
+      FAIL("attempt " << attempt << " ended (exit code " << early.code << ") before writing "
+                      << count << " checkpoint(s); the kill would come too late: "
+                      << early.err);
+    }
+    // With one checkpoint awaited, the interval is not measured: kill at once.
+    const bool alive = c.running_after(u * gap);
+    c.signal(SIGKILL);
+    const Result killed = c.wait();
+    INFO("attempt " << attempt << " (" << count << " checkpoints, then " << u * gap
+                    << " s): " << killed.err);
+    REQUIRE(alive);  // else the run finished before the kill: it was not interrupted
+    REQUIRE(killed.signal == SIGKILL);
   }
-  INFO("killed " << killed << " times, resumed " << resumed << " times: " << last.err);
+  const Result last = run(resume, s.path());
+  INFO("final resume: " << last.err);
   REQUIRE(last.code == 0);
+  // Every kill was followed by a resume, and the run's own bookkeeping says so.
+  CHECK(summary_int(s.path() / "cut" / "summary.json", "resumes") == kills);
+  CHECK(summary_int(s.path() / "cut" / "summary.json", "resumes") >= 1);
   for (const std::string& f : compared) {
     INFO(f);
     REQUIRE(fs::exists(s.path() / "ref" / f) == fs::exists(s.path() / "cut" / f));
@@ -93,6 +148,28 @@ void kill_and_resume(const std::vector<std::string>& run_args, std::uint64_t see
   CHECK(!fs::exists(s.path() / "cut" / "checkpoint.hgck.tmp"));
   for (const auto& e : fs::directory_iterator(s.path() / "cut"))
     CHECK(e.path().filename().string().rfind(".hypergas-staging", 0) != 0);
+}
+
+/// Starts `hypergas run args --out DIR` in `cwd` and sends Ctrl-C as soon as the run holds
+/// its output folder (readiness: the staging folder exists, so the lock is taken and the
+/// handler installed); the run then stops at its next stop with a checkpoint.
+Result interrupt_when_started(std::vector<std::string> args, const fs::path& cwd,
+                              const std::string& dir) {
+  args.insert(args.end(), {"--out", dir});
+  Child c(args, cwd);
+  const bool started = c.wait_until([&] { return has_staging(cwd / dir); });
+  c.signal(SIGINT);
+  Result r = c.wait();
+  if (!started) r.err = "(ended before its staging folder appeared) " + r.err;
+  return r;
+}
+
+/// The folder's files: relative path -> content.
+std::map<std::string, std::string> contents(const fs::path& dir) {
+  std::map<std::string, std::string> m;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    m[e.path().lexically_relative(dir).string()] = e.is_regular_file() ? slurp(e.path()) : "/";
+  return m;
 }
 
 std::vector<std::string> dsmc(int dim, const char* model, bool species) {
@@ -145,30 +222,39 @@ TEST_CASE("Ctrl-C writes a checkpoint, says how to resume, and resume finishes t
   args.insert(args.end(), {"--out", "ref"});
   REQUIRE(run(args, s.path()).code == 0);
   args.back() = "cut";
-  // Whenever SIGINT lands, the run stops at its next sampling time with a checkpoint.
-  const Result r = run(args, s.path(), 0.3);
-  if (r.code == 0) SUCCEED("the run finished before the interrupt");
-  else {
-    INFO(r.err);
-    REQUIRE(r.code == 130);
-    CHECK(r.err.find("hypergas resume cut") != std::string::npos);
-    REQUIRE(fs::exists(s.path() / "cut" / "checkpoint.hgck"));
-    const Result done = run({"resume", "cut"}, s.path());
-    INFO(done.err);
-    REQUIRE(done.code == 0);
-  }
+  // Readiness: the run's first checkpoint (t = 0.2 of 3). Ctrl-C then stops it at its next
+  // sampling time with a new checkpoint.
+  Child c(args, s.path());
+  const fs::path ck = s.path() / "cut" / "checkpoint.hgck";
+  const bool ready = c.wait_until([&] { return fs::exists(ck); });
+  const FileStamp first = stamp(ck);
+  c.signal(SIGINT);
+  const Result r = c.wait();
+  INFO(r.err);
+  REQUIRE(ready);  // else the run ended before its first checkpoint: nothing was interrupted
+  REQUIRE(r.signal == 0);
+  REQUIRE(r.code == 130);
+  CHECK(r.err.find("interrupted at t = ") != std::string::npos);
+  CHECK(r.err.find("hypergas resume cut") != std::string::npos);
+  REQUIRE(fs::exists(ck));
+  CHECK(!(stamp(ck) == first));  // the interrupt wrote its own checkpoint
+  CHECK(!fs::exists(s.path() / "cut" / "moments.csv"));
+  const Result done = run({"resume", "cut"}, s.path());
+  INFO(done.err);
+  REQUIRE(done.code == 0);
+  CHECK(summary_int(s.path() / "cut" / "summary.json", "resumes") == 1);
   CHECK(slurp(s.path() / "ref" / "moments.csv") == slurp(s.path() / "cut" / "moments.csv"));
 }
 
 TEST_CASE("resume refuses corrupted, truncated, foreign and missing checkpoints",
           "[checkpoint]") {
   Scratch s("bad");
-  std::vector<std::string> args = {"run", "--engine", "dsmc", "--n", "300000", "--until", "5",
-                                   "--every", "0.1", "--out", "cut"};
-  // Ctrl-C early: the next stop writes the checkpoint.
-  const Result r = run(args, s.path(), 0.15);
+  const Result r = interrupt_when_started(
+      {"run", "--engine", "dsmc", "--n", "300000", "--until", "5", "--every", "0.1"}, s.path(),
+      "cut");
   INFO(r.err);
-  REQUIRE(r.code == 130);  // the run takes seconds; the interrupt comes after 0.15 s
+  REQUIRE(r.signal == 0);
+  REQUIRE(r.code == 130);
   const fs::path ck = s.path() / "cut" / "checkpoint.hgck";
   REQUIRE(fs::exists(ck));
   const std::string good = slurp(ck);
@@ -177,11 +263,14 @@ TEST_CASE("resume refuses corrupted, truncated, foreign and missing checkpoints"
     f << bytes;
   };
   const auto refused = [&](const char* what) {
+    const auto before = contents(s.path() / "cut");
     const Result x = run({"resume", "cut"}, s.path());
     INFO(what << ": " << x.err);
     CHECK(x.code == 2);
     CHECK(x.err.rfind("hypergas: ", 0) == 0);
     CHECK(x.err.find("checkpoint") != std::string::npos);
+    CHECK(lines(x.err).size() == 1);
+    CHECK(contents(s.path() / "cut") == before);
   };
   std::string flipped = good;
   flipped[flipped.size() / 2] ^= 0x10;
@@ -203,20 +292,92 @@ TEST_CASE("resume refuses corrupted, truncated, foreign and missing checkpoints"
   CHECK(ok.code == 0);
 }
 
+TEST_CASE("resume refuses a checkpoint of another format version and names both",
+          "[checkpoint]") {
+  namespace ckpt = hypergas::checkpoint;
+  Scratch s("version");
+  const Result r = interrupt_when_started(
+      {"run", "--engine", "dsmc", "--n", "300000", "--until", "5", "--every", "0.1"}, s.path(),
+      "cut");
+  INFO(r.err);
+  REQUIRE(r.code == 130);
+  const fs::path ck = s.path() / "cut" / "checkpoint.hgck";
+  REQUIRE(fs::exists(ck));
+  const std::string good = slurp(ck);
+  REQUIRE(good.size() > 40);
+  std::uint32_t stored = 0;
+  std::memcpy(&stored, good.data() + 8, 4);  // magic (8 bytes), then the version (u32)
+  REQUIRE(stored == ckpt::format_version);
+  REQUIRE(ckpt::format_version >= 3);  // raised on every layout change (docs/checkpoints.md)
+
+  // The file with its version field set to `v`; with `rehash`, its checksum made valid again
+  // (header without the size field, payload, size field: checkpoint.hpp), so that only the
+  // version differs from a file this build would accept.
+  const auto with_version = [&](std::uint32_t v, bool rehash) {
+    std::string f = good;
+    std::memcpy(f.data() + 8, &v, 4);
+    if (rehash) {
+      const std::size_t payload = f.size() - 24 - 16;
+      ckpt::detail::WordHash h;
+      const auto* p = reinterpret_cast<const unsigned char*>(f.data());
+      h.add(p, 16);
+      h.add(p + 24, payload);
+      h.add(p + 16, 8);
+      const std::uint64_t sum = h.finish();
+      std::memcpy(f.data() + 24 + payload, &sum, 8);
+    }
+    return f;
+  };
+  // The rehashing is right: applied with the file's own version it gives the file back.
+  REQUIRE(with_version(ckpt::format_version, true) == good);
+
+  for (const std::uint32_t v : {1u, ckpt::format_version - 1, ckpt::format_version + 1}) {
+    for (const bool rehash : {false, true}) {
+      {
+        std::ofstream f(ck, std::ios::binary | std::ios::trunc);
+        f << with_version(v, rehash);
+      }
+      const auto before = contents(s.path() / "cut");
+      const Result x = run({"resume", "cut"}, s.path());
+      INFO("version " << v << (rehash ? ", checksum valid" : ", checksum stale") << ": "
+                      << x.err);
+      CHECK(x.code == 2);
+      CHECK(x.err.rfind("hypergas: ", 0) == 0);
+      CHECK(lines(x.err).size() == 1);
+      CHECK(x.err.find("checkpoint format " + std::to_string(v) + ", this build reads format " +
+                       std::to_string(ckpt::format_version)) != std::string::npos);
+      CHECK(x.out.empty());
+      CHECK(contents(s.path() / "cut") == before);  // nothing written, nothing removed
+    }
+  }
+  // The same file with its own version is accepted and finishes the run.
+  {
+    std::ofstream f(ck, std::ios::binary | std::ios::trunc);
+    f << good;
+  }
+  const Result ok = run({"resume", "cut"}, s.path());
+  INFO(ok.err);
+  CHECK(ok.code == 0);
+}
+
 TEST_CASE("a second process on a folder in use is refused", "[checkpoint]") {
   Scratch s("lock");
   fs::create_directories(s.path() / "other");
-  Result first;
-  // The first run takes seconds; Ctrl-C ends it after 2 s (with a checkpoint).
-  std::thread t([&] {
-    first = run({"run", "--n", "300000", "--until", "5", "--out", "busy"}, s.path(), 2.0);
-  });
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  // Readiness: the first run's staging folder, created right after it takes the folder's
+  // lock. The run is far from its end (1000 time units) when the second process starts.
+  Child first({"run", "--n", "300000", "--until", "1000", "--every", "0.5", "--out", "busy"},
+              s.path());
+  const bool holds = first.wait_until([&] { return has_staging(s.path() / "busy"); });
   const Result second =
       run({"run", "--n", "100", "--until", "0.5", "--out", "../busy"}, s.path() / "other");
-  t.join();
-  INFO("first: " << first.err << "\nsecond: " << second.err);
+  const bool still = first.running();
+  first.signal(SIGINT);
+  const Result r = first.wait();
+  INFO("first: " << r.err << "\nsecond: " << second.err);
+  REQUIRE(holds);
+  REQUIRE(still);  // the folder was in use for the whole of the second process
   CHECK(second.code == 2);
   CHECK(second.err.find("in use by another hypergas process") != std::string::npos);
-  CHECK((first.code == 0 || first.code == 130));
+  CHECK(r.signal == 0);
+  CHECK(r.code == 130);
 }

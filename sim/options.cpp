@@ -15,6 +15,17 @@ namespace hypergas::cli {
 namespace {
 [[noreturn]] void bad(const std::string& msg) { throw InvalidInput(msg); }
 bool finite_positive(double x) { return std::isfinite(x) && x > 0.0; }
+
+/// parse_number inside a CLI11 callback: its InvalidInput as CLI11's parse error, which
+/// main() reports with exit code 2.
+template <class T>
+T parse(const std::string& option, const std::string& text) {
+  try {
+    return parse_number<T>(option, text);
+  } catch (const InvalidInput& e) {
+    throw CLI::ValidationError(e.what());
+  }
+}
 }  // namespace
 
 template <class T>
@@ -28,13 +39,13 @@ CLI::Option* add_number(CLI::App& app, const std::string& names, T& target,
         names,
         [&target, name](const std::vector<std::string>& v) {
           target.clear();
-          for (const std::string& s : v) target.push_back(parse_number<E>(name, s));
+          for (const std::string& s : v) target.push_back(parse<E>(name, s));
         },
         help);
     opt->default_str(fmt::format("{}", fmt::join(target, " ")));
   } else {
     opt = app.add_option_function<std::string>(
-        names, [&target, name](const std::string& s) { target = parse_number<T>(name, s); },
+        names, [&target, name](const std::string& s) { target = parse<T>(name, s); },
         help);
     opt->default_str(fmt::format("{}", target));
   }

@@ -40,7 +40,8 @@ class _Engine:
         t0 = self.time
         if not until >= t0:
             raise ValueError(f"until must be >= the engine time {t0:.17g}, got {until!r}")
-        _hypergas.check_option(self._kind, "until", until)
+        if until > t0:  # the command's range of --until (at most 1e12)
+            _hypergas.check_option(self._kind, "until", until)
         observers = tuple(observers)
         for o in observers:
             if not isinstance(o, _hypergas.Observer):

@@ -72,14 +72,16 @@ TEST_CASE("DSMC observers: called at multiples of every, never between", "[dsmc]
   REQUIRE(std::is_sorted(rec.cpp.begin(), rec.cpp.end()));
   REQUIRE(rec.cpp.front() == 0.0);
   REQUIRE_THROWS_AS(e.run_until(3.0, &rec, 0.0), InvalidInput);
-  // The engine concept's rules: the grid starts at the time of the call, the end time is
-  // reached exactly, and a time in the past or not finite is rejected.
+  // The engine concept's rules (schedule.hpp): the grid starts at the time of the call,
+  // `every` is rounded to divide the span, the last instant is the end time exactly, and a
+  // time in the past or not finite is rejected.
   Recorder late;
   e.run_until(2.1);
   e.run_until(2.9, &late, 0.25);
-  REQUIRE(late.times.size() == 4);  // 2.1, 2.35, 2.6, 2.85
+  REQUIRE(late.times.size() == 4);  // 0.8 / 0.25 rounds to 3 intervals: 2.1, 2.37, 2.63, 2.9
   for (std::size_t k = 0; k < late.times.size(); ++k)
-    REQUIRE(late.times[k] == Approx(2.1 + 0.25 * k));
+    REQUIRE(late.times[k] == Approx(2.1 + (2.9 - 2.1) / 3.0 * k));
+  REQUIRE(late.times.back() == 2.9);
   REQUIRE(e.time() == 2.9);
   REQUIRE_THROWS_AS(e.run_until(2.0), InvalidInput);
   REQUIRE_THROWS_AS(e.run_until(std::numeric_limits<double>::infinity()), InvalidInput);

@@ -256,7 +256,7 @@ void renumbering_check() {
   LastState a, b;
   double t = 0.0;
   while (plain.collisions() < 3 * cfg.n) plain.run_until(t += 0.25);
-  plain.run_until(t + 0.25, &a, 1.0);  // one snapshot, at the start of this interval
+  plain.run_until(t + 0.25, &a, 1.0);  // snapshots at both ends (one interval); a keeps the last
   sorted.run_until(t);
   sorted.run_until(t + 0.25, &b, 1.0);
   REQUIRE(plain.collisions() == sorted.collisions());

@@ -22,14 +22,15 @@ CLI::App* add_report_command(CLI::App& app) {
   r->add_option("--out,-o", o.out, "output folder (created if missing)")->capture_default_str();
   r->add_flag("--quick", o.quick, "about 20 s instead of about 5 min: fewer points and replicas");
   add_number(*r, "--seed", o.seed, "random seed");
-  add_number(*r, "--threads,-j", o.threads, "replicas run on this many threads, 1..256");
+  add_number(*r, "--threads,-j", o.threads, "replicas run on this many threads, 1..64");
   r->add_flag("--no-plot{false}", o.plot, "skip the PNG (gnuplot)");
   return r;
 }
 
 int report_command() {
   const studies::ReportOptions& o = report_options;
-  options::check_threads(o.threads, "--threads");
+  if (o.threads < 1 || o.threads > 64)
+    throw InvalidInput(fmt::format("--threads must be in 1..64, got {}", o.threads));
   OutputDir out(o.out);
   const studies::ReportResult res = studies::run_report_study(o);
   studies::write_report(res, out.staging(), o.plot);

@@ -27,9 +27,6 @@
 
 namespace hypergas {
 
-/// The most threads one system (or one study) may run on: the range of every --threads.
-inline constexpr int max_threads = 256;
-
 class ThreadTeam {
  public:
   /// A team of `threads` >= 1 (the calling thread counts as thread 0).

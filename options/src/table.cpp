@@ -8,7 +8,6 @@
 #include <fmt/ranges.h>
 
 #include "hypergas/error.hpp"
-#include "hypergas/thread_team.hpp"
 
 namespace hypergas::options {
 
@@ -58,7 +57,7 @@ const Option table[] = {
   {"fraction", 0, E::both, U::engine, &R::fraction, {0, 1, false, false, "in [0, 1]"}, nullptr, nullptr, "", "number fraction of species 2 (mass m2)", "", true, false},
   {"temperature", 0, E::dsmc, U::engine, &R::temperature, {1e-100, 1e100, false, false, "a finite kT > 0 in [1e-100, 1e100]"}, nullptr, nullptr, "m1 v0^2", "initial kT (edmd fixes kT = 1)", "", true, false},
   {"seed", 0, E::both, U::engine, &R::seed, {0, 1.8446744073709552e19, false, false, "an integer in 0..2^64-1"}, nullptr, nullptr, "", "random seed", "", false, false},
-  {"threads", 'j', E::dsmc, U::engine, &R::threads, {1, max_threads, false, false, "in 1..256"}, nullptr, nullptr, "", "run the one system on T threads; every file is bit for bit the same for every T", "", false, false},
+  {"threads", 'j', E::dsmc, U::engine, &R::threads, {1, 256, false, false, "in 1..256"}, nullptr, nullptr, "", "run the one system on T threads; every file is bit for bit the same for every T", "", false, false},
   {"replicas", 0, E::dsmc, U::command, &R::replicas, {1, 64, false, false, "in 1..64"}, nullptr, nullptr, "", "run K independent copies (files from copy 0, which keeps --seed; summary adds totals and replica error bars)", "", false, false},
   {"checkpoint-every", 0, E::both, U::command, &R::checkpoint_every, {pos_open, 1e308, true, false, "a finite time > 0"}, nullptr, nullptr, time_unit, "write OUT/checkpoint.hgck at the first sampling time after every T time units; continue a stopped run with `hypergas resume OUT`. Ctrl-C always writes one and stops", "off", false, false},
   {"checkpoint-wall", 0, E::both, U::command, &R::checkpoint_wall, {}, check_duration, nullptr, "", "also write a checkpoint after this much wall time, e.g. 90s, 10min, 2h", "off", false, false},

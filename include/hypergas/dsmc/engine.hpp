@@ -198,9 +198,8 @@ class Engine {
   /// changes the speed. Below about 20000 particles several threads would only wait for
   /// each other, so the one-thread loop runs unless a block size is given.
   void set_threads(int threads, std::uint32_t block = 0) {
-    if (threads < 1 || threads > max_threads)
-      throw InvalidInput("DSMC: threads must be in 1.." + std::to_string(max_threads) +
-                         ", got " + std::to_string(threads));
+    if (threads < 1 || threads > 256)
+      throw InvalidInput("DSMC: threads must be in 1..256, got " + std::to_string(threads));
     blocks_.configure(threads, block, s_.n);
   }
   /// Sets a function called between epochs (exact scheme: every ~2N candidates and at each

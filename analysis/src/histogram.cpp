@@ -128,6 +128,17 @@ void Histogram::restore(const std::vector<double>& edges, const std::vector<doub
   impl_ = std::move(fresh);
 }
 
+void Histogram::set_counts(const std::vector<double>& counts, double under, double over) {
+  if (counts.size() != bins())
+    throw InvalidInput("Histogram::set_counts: " + std::to_string(counts.size()) +
+                       " counts for " + std::to_string(bins()) + " bins");
+  std::vector<double> edges;
+  edges.reserve(bins() + 1);
+  for (std::size_t i = 0; i < bins(); ++i) edges.push_back(lower(i));
+  edges.push_back(upper(bins() - 1));
+  restore(edges, counts, under, over);
+}
+
 Histogram make_histogram(const MaxwellReference& ref, std::size_t bins) {
   ref.validate();
   constexpr double tail = 1e-7;

@@ -3,6 +3,7 @@
 #include "hypergas/analysis/moments_recorder.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <exception>
 #include <iterator>
@@ -34,40 +35,87 @@ constexpr std::size_t n_common_columns = std::size(common_columns);
 MomentsRecorder::MomentsRecorder(std::size_t bins, std::size_t ks_cap, std::uint64_t ks_seed)
     : bins_(bins), ks_cap_(ks_cap), ks_rng_(ks_seed, ks_stream) {
   if (bins < 1) throw InvalidInput("MomentsRecorder: need at least one histogram bin");
-  if (ks_cap < 1) throw InvalidInput("MomentsRecorder: the KS sample cap must be >= 1");
 }
 
 namespace {
 
-/// Adds particles [begin, end) of `s`: moments into `sums`, speeds into the histograms
-/// (pooled, then per species for mixtures), the speeds `pick(i)` selects into `ks`. Pooled
-/// speeds are mass-weighted, |v| sqrt(m_i / m_mean); species speeds are plain |v|.
-template <class Pick>
-void add_particles(const Snapshot& s, std::size_t begin, std::size_t end, double m_mean,
-                   int ns, MomentSums& sums, std::vector<Histogram>& hists,
-                   std::vector<double>& ks, Pick&& pick) {
-  const auto stride = static_cast<std::size_t>(s.stride);
-  if (!s.species && !s.inv_mass) {
-    // Unit masses: the loop below with w = 1, its divisions and one square root hoisted
-    // (the same values bit for bit; a unit-mass gas is the common case).
-    const double f = 1.0 / std::sqrt(1.0 * m_mean);
-    for (std::size_t i = begin; i < end; ++i) {
-      const double speed = f * std::sqrt(sums.add_unit_mass(s.velocities + i * stride));
-      hists[0].add(speed);
-      if (pick(i)) ks.push_back(speed);
-    }
+/// Whether the snapshot's species masses are those of the layout.
+bool same_masses(const Snapshot& s, const tally::Layout& L) {
+  if (!s.species) return true;
+  for (int k = 0; k < s.n_species; ++k)
+    if (s.species_inv_mass[k] != L.inv_mass[std::size_t(k)]) return false;
+  return true;
+}
+
+/// A kT that moved by more than this (relative) since the configuring snapshot configures
+/// again.
+constexpr double kT_tolerance = 1e-9;
+/// Fine bins in all at most, and per sqrt(n).
+constexpr std::size_t max_fine = 32768;
+constexpr double fine_per_sqrt_n = 32.0;
+
+/// 2^k with 2^k >= x > 2^(k-1), for x > 0: the power of two at or just above x.
+double pow2_above(double x) {
+  int e = 0;
+  const double m = std::frexp(x, &e);  // x = m 2^e, m in [0.5, 1)
+  return std::ldexp(1.0, m == 0.5 ? e - 1 : e);
+}
+
+/// P(D/2, z), the CDF of the MB speed at z = m s^2 / (2 kT), in closed form: the sum of the
+/// Poisson terms for even D, erf and the recursion P(a + 1) = P(a) - z^a e^-z / Gamma(a + 1)
+/// for odd D. Absolute error ~1e-15 (what the binned KS needs); one exp and one erf.
+double speed_cdf(int dim, double z) {
+  if (!(z > 0.0)) return 0.0;
+  const double ez = std::exp(-z);
+  double p;
+  if (dim % 2 == 0) {
+    double term = 1.0, sum = 1.0;
+    for (int j = 1; j < dim / 2; ++j) sum += term *= z / j;
+    p = 1.0 - ez * sum;
   } else {
-    for (std::size_t i = begin; i < end; ++i) {
-      const double w = s.inverse_mass(i);
-      const double vv = sums.add(s.velocities + i * stride, w);
-      const double f = 1.0 / std::sqrt(w * m_mean);
-      const double speed = f * std::sqrt(vv);
-      hists[0].add(speed);
-      if (ns > 1) hists[1 + s.species[i]].add(std::sqrt(vv));
-      if (pick(i)) ks.push_back(speed);
+    p = std::erf(std::sqrt(z));
+    double term = 2.0 * std::sqrt(z / M_PI) * ez;  // z^(1/2) e^-z / Gamma(3/2)
+    for (int k = 1; k <= (dim - 1) / 2; ++k) {
+      p -= term;
+      term *= z / (k + 0.5);
     }
   }
+  return std::clamp(p, 0.0, 1.0);
 }
+
+/// Mean of a term under MB at kT for particles of the given masses (counts per species),
+/// in scaled units: theta_k = kT c^2 / m_k.
+struct Expect {
+  int dim;
+  double kT_c2;  // kT c^2
+  double m_mean;
+  std::vector<std::pair<double, double>> species;  // (fraction, mass)
+  /// <|u|^2k> over the species.
+  double u(int k) const {
+    double e = 0.0;
+    for (const auto& [frac, m] : species) {
+      double x = 1.0;
+      for (int i = 0; i < k; ++i) x *= (dim + 2.0 * i) * kT_c2 / m;
+      e += frac * x;
+    }
+    return e;
+  }
+  /// <|w|^2k> (mass-weighted: every species at m_mean).
+  double w(int k) const {
+    double x = 1.0;
+    for (int i = 0; i < k; ++i) x *= (dim + 2.0 * i) * kT_c2 / m_mean;
+    return x;
+  }
+  /// <w_x^2k> = (2k - 1)!! theta^k.
+  double x(int k) const {
+    double v = 1.0;
+    for (int i = 0; i < k; ++i) v *= (2.0 * i + 1.0) * kT_c2 / m_mean;
+    return v;
+  }
+};
+
+/// The fixed-point unit for terms of typical size `mean`: a typical term is ~2^40 units.
+double unit_for(double mean) { return std::ldexp(1.0, 40) / pow2_above(mean); }
 
 }  // namespace
 
@@ -84,7 +132,7 @@ int MomentsRecorder::threads() const { return team_ ? team_->size() : 1; }
 
 void MomentsRecorder::for_chunks(std::size_t chunks,
                                  const std::function<void(int, std::size_t)>& f) const {
-  if (!team_) {
+  if (!team_ || chunks < 2) {
     for (std::size_t c = 0; c < chunks; ++c) f(0, c);
     return;
   }
@@ -102,93 +150,239 @@ void MomentsRecorder::for_chunks(std::size_t chunks,
     if (e) std::rethrow_exception(e);
 }
 
+void MomentsRecorder::configure(const Snapshot& s, int ns) {
+  const std::size_t chunks = (s.n + chunk_size - 1) / chunk_size;
+  std::vector<std::optional<SnapshotTotals>> part(chunks);
+  for_chunks(chunks, [&](int, std::size_t c) {
+    part[c].emplace(s, c * chunk_size, std::min(s.n, (c + 1) * chunk_size));
+  });
+  SnapshotTotals totals = std::move(*part[0]);
+  for (std::size_t c = 1; c < chunks; ++c) totals.merge(*part[c]);
+  const double m_mean = totals.mean_mass(-1), kT = totals.temperature(-1);
+  const MaxwellReference ref{Quantity::speed, s.dim, kT, m_mean};
+  ref.validate();
+
+  Config c;
+  c.set = true;
+  c.kT = kT;
+  tally::Layout& L = c.layout;
+  L.dim = s.dim;
+  L.n_species = ns;
+  L.weighted = s.species != nullptr || s.inv_mass != nullptr;
+  L.m_mean = m_mean;
+  if (s.species)
+    for (int k = 0; k < s.n_species; ++k) L.inv_mass[std::size_t(k)] = s.species_inv_mass[k];
+  const double inv_c = pow2_above(std::sqrt(kT / m_mean));  // kT c^2 / m_mean in (1/4, 1]
+  c.scale = inv_c;
+  L.c2 = 1.0 / (inv_c * inv_c);
+  Expect ex{s.dim, kT * L.c2, m_mean, {}};
+  const double n = static_cast<double>(totals.count(-1));
+  if (s.species) {
+    for (int k = 0; k < ns; ++k)
+      if (totals.count(k) > 0)
+        ex.species.emplace_back(static_cast<double>(totals.count(k)) / n, totals.mean_mass(k));
+  } else {
+    ex.species.emplace_back(1.0, m_mean);
+  }
+  L.unit[tally::u2] = unit_for(ex.u(1));
+  L.unit[tally::u4] = unit_for(ex.u(2));
+  L.unit[tally::u6] = unit_for(ex.u(3));
+  L.unit[tally::u8] = unit_for(ex.u(4));
+  L.unit[tally::u12] = unit_for(ex.u(6));
+  L.unit[tally::w4] = unit_for(ex.w(2));
+  L.unit[tally::w8] = unit_for(ex.w(4));
+  L.unit[tally::x2] = unit_for(ex.x(1));
+  L.unit[tally::x4] = unit_for(ex.x(2));
+  L.unit[tally::x6] = unit_for(ex.x(3));
+  L.unit[tally::x8] = unit_for(ex.x(4));
+  L.energy_unit = unit_for(s.dim * kT * L.c2);
+  const std::size_t per_bin = std::clamp<std::size_t>(
+      static_cast<std::size_t>(std::ceil(fine_per_sqrt_n * std::sqrt(n) / bins_)), 1,
+      std::max<std::size_t>(1, max_fine / bins_));
+  L.fine = static_cast<std::uint32_t>(per_bin * bins_);
+  // the histograms: pooled at m_mean, then each species at its mass (the pooled mass for a
+  // species without particles)
+  for (int h = 0; h < L.histograms(); ++h) {
+    MaxwellReference r = ref;
+    if (h > 0 && totals.count(h - 1) > 0) r.mass = totals.mean_mass(h - 1);
+    r.validate();
+    const Histogram e = make_histogram(r, bins_);
+    const auto k = static_cast<std::size_t>(h);
+    c.lo[k] = e.lower(0);
+    c.hi[k] = e.upper(bins_ - 1);
+    c.mass[k] = r.mass;
+    L.lo[k] = c.lo[k] / inv_c;
+    L.inv_h[k] = static_cast<double>(L.fine) / ((c.hi[k] - c.lo[k]) / inv_c);
+  }
+  cfg_ = c;
+  derive_tables();
+}
+
+void MomentsRecorder::derive_tables() {
+  empty_.clear();
+  probs_.clear();
+  fine_cdf_.clear();
+  if (!cfg_.set) return;
+  const tally::Layout& L = cfg_.layout;
+  for (int h = 0; h < L.histograms(); ++h) {
+    const auto k = static_cast<std::size_t>(h);
+    const MaxwellReference r{Quantity::speed, L.dim, cfg_.kT, cfg_.mass[k]};
+    empty_.emplace_back(cfg_.lo[k], cfg_.hi[k], bins_);
+    probs_.push_back(reference_probabilities(empty_.back(), r));
+  }
+  fine_cdf_.resize(std::size_t(L.fine) + 1);
+  const double lo = cfg_.lo[0], width = (cfg_.hi[0] - cfg_.lo[0]) / L.fine;
+  const double z_per_s2 = cfg_.mass[0] / (2.0 * cfg_.kT);
+  for (std::size_t k = 0; k <= L.fine; ++k) {
+    const double e = lo + width * static_cast<double>(k);
+    fine_cdf_[k] = speed_cdf(L.dim, z_per_s2 * e * e);
+  }
+}
+
+tally::Tally MomentsRecorder::pass(const Snapshot& s) const {
+  const std::size_t chunks = (s.n + chunk_size - 1) / chunk_size;
+  const int T = chunks > 1 ? threads() : 1;
+  std::vector<tally::Tally> part(static_cast<std::size_t>(T), tally::Tally(cfg_.layout));
+  for_chunks(chunks, [&](int t, std::size_t c) {
+    part[static_cast<std::size_t>(t)].add_snapshot(s, c * chunk_size,
+                                                   std::min(s.n, (c + 1) * chunk_size));
+  });
+  for (int t = 1; t < T; ++t) part[0].merge(part[static_cast<std::size_t>(t)]);
+  return std::move(part[0]);
+}
+
+std::vector<double> MomentsRecorder::ks_sample(const Snapshot& s, double m_mean,
+                                               std::size_t row) const {
+  const auto stride = static_cast<std::size_t>(s.stride);
+  const auto speed = [&](std::size_t i) {
+    const double* v = s.velocities + i * stride;
+    double vv = 0.0;
+    for (int k = 0; k < s.dim; ++k) vv += v[k] * v[k];
+    return std::sqrt(vv) / std::sqrt(s.inverse_mass(i) * m_mean);
+  };
+  std::vector<double> out;
+  if (s.n <= ks_cap_) {
+    out.reserve(s.n);
+    for (std::size_t i = 0; i < s.n; ++i) out.push_back(speed(i));
+    return out;
+  }
+  const Rng stream = ks_rng_.split(row);
+  const std::size_t chunks = (s.n + chunk_size - 1) / chunk_size;
+  std::vector<std::vector<double>> part(chunks);
+  for_chunks(chunks, [&](int, std::size_t c) {
+    const std::size_t b = c * chunk_size, e = std::min(s.n, (c + 1) * chunk_size);
+    // chunk c's share: floor(k e / n) - floor(k b / n) particles, drawn without
+    // replacement (Floyd's algorithm) from its own stream, taken in particle order
+    __extension__ using u128 = unsigned __int128;  // k e may exceed 2^64
+    const u128 k = ks_cap_, n = s.n;
+    const auto want = static_cast<std::size_t>(k * e / n - k * b / n);
+    std::vector<bool> chosen(e - b, false);
+    Rng r = stream.split(c);
+    for (std::size_t j = e - b - want; j < e - b; ++j) {
+      const std::size_t x = static_cast<std::size_t>(r.below(j + 1));
+      chosen[chosen[x] ? j : x] = true;
+    }
+    part[c].reserve(want);
+    for (std::size_t i = b; i < e; ++i)
+      if (chosen[i - b]) part[c].push_back(speed(i));
+  });
+  out.reserve(ks_cap_);
+  for (const auto& p : part) out.insert(out.end(), p.begin(), p.end());
+  return out;
+}
+
 void MomentsRecorder::observe(const Snapshot& s) {
   validate(s);
   if (s.n < 2) throw InvalidInput("MomentsRecorder: need at least 2 particles");
   const int ns = s.species ? s.n_species : 1;
   if (!columns_.empty() && (ns != n_species_ || s.dim != dim_))
     throw InvalidInput("MomentsRecorder: snapshot dimension or species count changed");
-  // Above the KS cap the passes run over fixed chunks, on the recorder's threads, and the
-  // chunks' sums are added in chunk order: the same numbers for every thread count.
-  const bool chunked = s.n > ks_cap_;
-  const Summation how = chunked ? Summation::compensated : Summation::plain;
-  const std::size_t chunks = chunked ? (s.n + chunk_size - 1) / chunk_size : 1;
-  const auto range = [&](std::size_t c) {
-    return std::pair{c * chunk_size, std::min(s.n, (c + 1) * chunk_size)};
-  };
-
-  // Pass 1: counts, masses and kinetic energies, per species and of all particles.
-  std::optional<SnapshotTotals> totals;
-  if (!chunked) {
-    totals.emplace(s);
-  } else {
-    std::vector<std::optional<SnapshotTotals>> part(chunks);
-    for_chunks(chunks, [&](int, std::size_t c) {
-      const auto [b, e] = range(c);
-      part[c].emplace(s, b, e);
-    });
-    totals = std::move(part[0]);
-    for (std::size_t c = 1; c < chunks; ++c) totals->merge(*part[c]);
-  }
-  const double m_mean = totals->mean_mass(-1, how);
-  // The references: MB at the common kT, of the mean mass (pooled) or of each species'
-  // mass; a species with no particle gets the pooled one (and an empty histogram).
-  const MaxwellReference ref{Quantity::speed, s.dim, totals->temperature(-1, how), m_mean};
-  ref.validate();
-  std::vector<MaxwellReference> refs{ref};
-  std::vector<Histogram> hists{make_histogram(ref, bins_)};
-  if (ns > 1) {
-    for (int k = 0; k < ns; ++k) {
-      MaxwellReference rk = ref;
-      if (totals->count(k) > 0) rk.mass = totals->mean_mass(k, how);
-      rk.validate();
-      refs.push_back(rk);
-      hists.push_back(make_histogram(rk, bins_));
+  if (ns > max_species)
+    throw InvalidInput("MomentsRecorder: at most " + std::to_string(max_species) + " species");
+  // the engine's tally if it fits the layout, else one pass with the layout, else
+  // configure from this snapshot and pass
+  const tally::Tally* kept = s.tally && s.tally->tally ? s.tally->tally.get() : nullptr;
+  const bool fits = cfg_.set && cfg_.layout.dim == s.dim && cfg_.layout.n_species == ns &&
+                    cfg_.layout.weighted == (s.species != nullptr || s.inv_mass != nullptr) &&
+                    s.inv_mass == nullptr && same_masses(s, cfg_.layout);
+  if (fits && kept && kept->layout() == cfg_.layout &&
+      kept->count(-1) == static_cast<std::int64_t>(s.n) && record(s, *kept))
+    return;
+  if (fits) {
+    tally::Tally t = pass(s);
+    ++passes_;
+    if (record(s, t)) {
+      if (s.tally) s.tally->tally = std::make_unique<tally::Tally>(std::move(t));
+      return;
     }
   }
+  configure(s, ns);
+  tally::Tally t = pass(s);
+  ++passes_;
+  if (!record(s, t))
+    throw InvalidInput("MomentsRecorder: the snapshot's temperature is not reproducible");
+  if (s.tally) s.tally->tally = std::make_unique<tally::Tally>(std::move(t));
+}
 
-  // Pass 2: power sums, histograms and the KS sample.
-  MomentSums sums(s.dim, m_mean);
-  std::vector<double> ks_sample;
-  ks_sample.reserve(std::min(s.n, ks_cap_));
-  const Rng stream = ks_rng_.split(rows_.size());
-  if (!chunked) {
-    SequentialSample pick(s.n, ks_cap_, stream);
-    add_particles(s, 0, s.n, m_mean, ns, sums, hists, ks_sample,
-                  [&](std::size_t) { return pick.take(); });
-  } else {
-    const int T = threads();
-    std::vector<MomentSums> part(chunks, MomentSums(s.dim, m_mean));
-    std::vector<std::vector<Histogram>> thread_hists(static_cast<std::size_t>(T), hists);
-    std::vector<std::vector<double>> ks_part(chunks);
-    for_chunks(chunks, [&](int t, std::size_t c) {
-      const auto [b, e] = range(c);
-      // Chunk c's share of the KS sample: floor(k e / n) - floor(k b / n) particles,
-      // drawn without replacement (Floyd's algorithm) from its own stream.
-      __extension__ using u128 = unsigned __int128;  // k e may exceed 2^64
-      const u128 k = ks_cap_, n = s.n;
-      const auto want = static_cast<std::size_t>(k * e / n - k * b / n);
-      std::vector<bool> chosen(e - b, false);
-      Rng r = stream.split(c);
-      for (std::size_t j = e - b - want; j < e - b; ++j) {
-        const std::size_t x = static_cast<std::size_t>(r.below(j + 1));
-        chosen[chosen[x] ? j : x] = true;
-      }
-      ks_part[c].reserve(want);
-      add_particles(s, b, e, m_mean, ns, part[c], thread_hists[static_cast<std::size_t>(t)],
-                    ks_part[c], [&](std::size_t i) { return chosen[i - b]; });
-    });
-    for (std::size_t c = 0; c < chunks; ++c) {
-      sums.merge(part[c]);
-      ks_sample.insert(ks_sample.end(), ks_part[c].begin(), ks_part[c].end());
-    }
-    for (const auto& th : thread_hists)
-      for (std::size_t h = 0; h < hists.size(); ++h) hists[h].merge(th[h]);
+bool MomentsRecorder::record(const Snapshot& s, const tally::Tally& t) {
+  const tally::Layout& L = cfg_.layout;
+  const int ns = L.n_species;
+  const double n = static_cast<double>(t.count(-1));
+  const double scale2 = cfg_.scale * cfg_.scale;
+  const double kT = t.energy(-1) / (s.dim * n) * scale2;
+  if (!(std::abs(kT - cfg_.kT) <= kT_tolerance * cfg_.kT)) return false;
+  // mean mass of the species counts (the layout's when the counts are those it was made of)
+  double m_mean = L.m_mean;
+  if (s.species) {
+    double mass = 0.0;
+    for (int k = 0; k < ns; ++k)
+      if (t.count(k) > 0) mass += static_cast<double>(t.count(k)) / s.species_inv_mass[k];
+    if (std::abs(mass / n - m_mean) > 1e-12 * m_mean) return false;
   }
-  const Moments m = sums.result(how);
-  const double ks_p = ks_test(std::move(ks_sample), ref).p_value;
+  using tally::Term;
+  PowerSums p;
+  p.n = n;
+  p.s2 = t.term(Term::u2), p.s4 = t.term(Term::u4), p.s6 = t.term(Term::u6);
+  p.s8 = t.term(Term::u8), p.s12 = t.term(Term::u12);
+  p.w4 = t.term(Term::w4), p.w8 = t.term(Term::w8);
+  p.x2 = t.term(Term::x2), p.x4 = t.term(Term::x4), p.x6 = t.term(Term::x6);
+  p.x8 = t.term(Term::x8);
+  p.twice_e = t.energy(-1);
+  const Moments m = moments_from_sums(s.dim, m_mean, p, cfg_.scale);
+
+  // the coarse histograms from the fine ones; references at this snapshot's kT
+  const std::size_t per_bin = L.fine / bins_;
+  std::vector<Histogram> hists;
+  std::vector<MaxwellReference> refs;
+  BinnedCounts pooled;
+  for (int h = 0; h < L.histograms(); ++h) {
+    const auto k = static_cast<std::size_t>(h);
+    const std::int64_t* fine = t.counts(h);
+    std::vector<double> coarse(bins_, 0.0);
+    for (std::size_t i = 0; i < bins_; ++i) {
+      std::int64_t c = 0;
+      for (std::size_t f = 1 + i * per_bin; f < 1 + (i + 1) * per_bin; ++f) c += fine[f];
+      coarse[i] = static_cast<double>(c);
+    }
+    const auto under = static_cast<double>(fine[0]);
+    const auto over = static_cast<double>(fine[L.fine + 1]);
+    if (h == 0) {
+      pooled.counts.reserve(bins_ + 2);
+      pooled.counts.push_back(under);
+      pooled.counts.insert(pooled.counts.end(), coarse.begin(), coarse.end());
+      pooled.counts.push_back(over);
+      pooled.probs = probs_[0];
+      pooled.total = n;
+    }
+    hists.push_back(empty_[k]);
+    hists.back().set_counts(coarse, under, over);
+    refs.push_back(MaxwellReference{Quantity::speed, s.dim, kT, cfg_.mass[k]});
+  }
+  const double ks_p = ks_cap_ == 0
+                          ? ks_test_binned(t.counts(0), fine_cdf_.data(), L.fine).p_value
+                          : ks_test(ks_sample(s, m_mean, rows_.size()), refs[0]).p_value;
   // kT comes from the same sample: one fitted parameter for the chi-square test.
-  const double chi2_p = chi_square_test(hists[0], ref, 1).p_value;
+  const double chi2_p = chi_square_test(pooled, 1).p_value;
   std::vector<double> row = {s.time,
                              s.collisions_per_particle,
                              m.m2.value,
@@ -202,13 +396,15 @@ void MomentsRecorder::observe(const Snapshot& s) {
                              m.m4_ratio.value,
                              m.m4_ratio.error,
                              m.kT,
-                             l1_distance(hists[0], ref),
-                             kl_divergence(hists[0], ref),
+                             l1_distance(pooled),
+                             kl_divergence(pooled),
                              ks_p,
                              chi2_p};
   if (ns > 1)
-    for (int k = 0; k < ns; ++k)
-      row.push_back(totals->count(k) > 0 ? totals->temperature(k, how) : NAN);
+    for (int k = 0; k < ns; ++k) {
+      const auto nk = static_cast<double>(t.count(k));
+      row.push_back(nk > 0 ? t.energy(k) / (s.dim * nk) * scale2 : NAN);
+    }
 
   if (columns_.empty()) {
     n_species_ = ns;
@@ -220,6 +416,7 @@ void MomentsRecorder::observe(const Snapshot& s) {
   rows_.push_back(std::move(row));
   last_histograms_ = std::move(hists);
   last_refs_ = std::move(refs);
+  return true;
 }
 
 std::vector<double> MomentsRecorder::column(const std::string& name) const {
@@ -262,7 +459,7 @@ void MomentsRecorder::check_restored() const {
   const auto bad = [](const std::string& what) {
     throw InvalidInput("MomentsRecorder: restored state is inconsistent: " + what);
   };
-  if (bins_ < 1 || ks_cap_ < 1) bad("no histogram bin or a KS cap of 0");
+  if (bins_ < 1) bad("no histogram bin");
   const bool empty = columns_.empty();
   if (empty != rows_.empty() || empty != last_histograms_.empty())
     bad("columns, rows and histograms disagree on whether anything was observed");
@@ -278,6 +475,16 @@ void MomentsRecorder::check_restored() const {
     if (r.size() != columns_.size()) bad("a row of another length than the columns");
   for (const auto& h : last_histograms_)
     if (h.bins() != bins_) bad("a histogram of another bin count");
+  if (!cfg_.set) bad("no tally layout after a snapshot");
+  const tally::Layout& L = cfg_.layout;
+  if (L.dim != dim_ || L.n_species != n_species_ || L.fine < bins_ || L.fine % bins_ != 0 ||
+      L.fine > max_fine + bins_ || !(cfg_.kT > 0.0) || !(cfg_.scale > 0.0) || !(L.m_mean > 0.0))
+    bad("a tally layout that does not fit the rows");
+  for (int h = 0; h < L.histograms(); ++h) {
+    const auto k = static_cast<std::size_t>(h);
+    if (!(cfg_.lo[k] < cfg_.hi[k]) || !std::isfinite(cfg_.hi[k]) || !(cfg_.mass[k] > 0.0))
+      bad("a tally histogram without a range or a mass");
+  }
 }
 
 }  // namespace hypergas::analysis

@@ -13,39 +13,49 @@
 
 namespace hypergas::analysis {
 
-namespace {
-// Bin fractions and reference probabilities, underflow first and overflow last.
-struct BinPairs {
-  std::vector<double> counts, probs;
-  double total = 0.0;
-};
-
-BinPairs bin_pairs(const Histogram& h, const MaxwellReference& ref) {
+std::vector<double> reference_probabilities(const Histogram& h, const MaxwellReference& ref) {
   ref.validate();
-  BinPairs b;
-  b.total = h.total();
-  if (!(b.total > 0.0)) throw InvalidInput("statistics: the histogram is empty");
   const std::size_t nb = h.bins();
-  b.counts.reserve(nb + 2);
-  b.probs.reserve(nb + 2);
-  b.counts.push_back(h.underflow());
-  b.probs.push_back(ref.cdf(h.lower(0)));
+  std::vector<double> probs;
+  probs.reserve(nb + 2);
+  probs.push_back(ref.cdf(h.lower(0)));
   for (std::size_t i = 0; i < nb; ++i) {
-    b.counts.push_back(h.count(i));
     // Difference of CDFs, or of upper tails on the right side where the CDF saturates.
     const double lo = h.lower(i), hi = h.upper(i);
     const double p =
         ref.cdf(lo) < 0.5 ? ref.cdf(hi) - ref.cdf(lo) : ref.upper_tail(lo) - ref.upper_tail(hi);
-    b.probs.push_back(std::max(p, 0.0));
+    probs.push_back(std::max(p, 0.0));
   }
+  probs.push_back(ref.upper_tail(h.upper(nb - 1)));
+  return probs;
+}
+
+BinnedCounts bin_probabilities(const Histogram& h, const MaxwellReference& ref) {
+  BinnedCounts b;
+  b.probs = reference_probabilities(h, ref);
+  b.total = h.total();
+  if (!(b.total > 0.0)) throw InvalidInput("statistics: the histogram is empty");
+  b.counts.reserve(h.bins() + 2);
+  b.counts.push_back(h.underflow());
+  for (std::size_t i = 0; i < h.bins(); ++i) b.counts.push_back(h.count(i));
   b.counts.push_back(h.overflow());
-  b.probs.push_back(ref.upper_tail(h.upper(nb - 1)));
   return b;
+}
+
+namespace {
+void check_binned(const BinnedCounts& b) {
+  if (!(b.total > 0.0)) throw InvalidInput("statistics: the histogram is empty");
+  if (b.counts.size() != b.probs.size() || b.counts.size() < 3)
+    throw InvalidInput("statistics: counts and bin probabilities differ in number");
 }
 }  // namespace
 
 double l1_distance(const Histogram& h, const MaxwellReference& ref) {
-  const BinPairs b = bin_pairs(h, ref);
+  return l1_distance(bin_probabilities(h, ref));
+}
+
+double l1_distance(const BinnedCounts& b) {
+  check_binned(b);
   double d = 0.0;
   for (std::size_t i = 0; i < b.counts.size(); ++i)
     d += std::abs(b.counts[i] / b.total - b.probs[i]);
@@ -53,7 +63,11 @@ double l1_distance(const Histogram& h, const MaxwellReference& ref) {
 }
 
 double kl_divergence(const Histogram& h, const MaxwellReference& ref) {
-  const BinPairs b = bin_pairs(h, ref);
+  return kl_divergence(bin_probabilities(h, ref));
+}
+
+double kl_divergence(const BinnedCounts& b) {
+  check_binned(b);
   double d = 0.0;
   for (std::size_t i = 0; i < b.counts.size(); ++i) {
     if (b.counts[i] <= 0.0) continue;
@@ -65,7 +79,11 @@ double kl_divergence(const Histogram& h, const MaxwellReference& ref) {
 }
 
 TestResult chi_square_test(const Histogram& h, const MaxwellReference& ref, int fitted_parameters) {
-  const BinPairs b = bin_pairs(h, ref);
+  return chi_square_test(bin_probabilities(h, ref), fitted_parameters);
+}
+
+TestResult chi_square_test(const BinnedCounts& b, int fitted_parameters) {
+  check_binned(b);
   constexpr double min_expected = 5.0;
   std::vector<double> obs, expct;
   double o = 0.0, e = 0.0;
@@ -205,8 +223,34 @@ TestResult ks_test(std::vector<double> sample, const MaxwellReference& ref) {
   TestResult r;
   r.statistic = d;
   r.dof = static_cast<double>(n);
-  const double sn = std::sqrt(r.dof);
-  r.p_value = kolmogorov_q((sn + 0.12 + 0.11 / sn) * d);  // Stephens (1970), JRSS B 32:115
+  r.p_value = ks_p_value(d, r.dof);
+  return r;
+}
+
+double ks_p_value(double d, double n) {
+  const double sn = std::sqrt(n);
+  return kolmogorov_q((sn + 0.12 + 0.11 / sn) * d);  // Stephens (1970), JRSS B 32:115
+}
+
+TestResult ks_test_binned(const std::int64_t* counts, const double* cdf, std::size_t bins) {
+  std::int64_t n = 0;
+  for (std::size_t b = 0; b < bins + 2; ++b) {
+    if (counts[b] < 0) throw InvalidInput("ks_test_binned: a negative count");
+    n += counts[b];
+  }
+  if (n <= 0) throw InvalidInput("ks_test_binned: no values");
+  const double dn = static_cast<double>(n);
+  // F_n at edge k is the count below it: the underflow and bins 0 .. k-1
+  std::int64_t below = counts[0];
+  double d = std::abs(static_cast<double>(below) / dn - cdf[0]);
+  for (std::size_t k = 1; k <= bins; ++k) {
+    below += counts[k];
+    d = std::max(d, std::abs(static_cast<double>(below) / dn - cdf[k]));
+  }
+  TestResult r;
+  r.statistic = d;
+  r.dof = dn;
+  r.p_value = ks_p_value(d, dn);
   return r;
 }
 

@@ -4,7 +4,9 @@
 // A `Snapshot` is a const, non-owning view of the state at one instant, with the dimension
 // and strides as runtime values, so the compiled analysis library reads any engine's state
 // without reaching into it. Observers are the only virtual interface on the data path and
-// are called once per sampling interval, never per collision.
+// are called once per sampling interval, never per collision. What an analysis needs per
+// collision it asks the engine to keep in a tally (hypergas/tally/tally.hpp), through
+// Snapshot::tally: the engine's collision-level observer.
 #pragma once
 
 #include <cstddef>
@@ -13,6 +15,10 @@
 #include "hypergas/particles.hpp"
 
 namespace hypergas {
+
+namespace tally {
+struct Slot;
+}
 
 /// A read-only view of the particles at one instant. Arrays are valid only during the
 /// observer call. Velocity of particle i, component k: velocities[i * stride + k].
@@ -29,6 +35,10 @@ struct Snapshot {
   const std::uint8_t* species = nullptr;     ///< per-particle species, or nullptr (one species)
   const double* species_inv_mass = nullptr;  ///< inverse mass per species (with `species`)
   int n_species = 1;
+  /// The engine's tally slot (engines that keep one: DSMC), or nullptr. An observer may
+  /// install a tally built from this snapshot; the engine then applies every later
+  /// collision to it (tally/tally.hpp).
+  tally::Slot* tally = nullptr;
 
   /// Inverse mass of particle i (1 for a single unit-mass species).
   double inverse_mass(std::size_t i) const {

@@ -9,10 +9,12 @@ from . import _hypergas
 MomentsRecorder = _hypergas.MomentsRecorder
 MomentsRecorder.__doc__ = """Records one row of the command's moments.csv per observation.
 
-MomentsRecorder(bins=50, ks_sample=1_000_000, ks_seed=..., threads=1): speed histograms
-of ``bins`` bins; the KS test on at most ``ks_sample`` speeds (a reproducible random
-subsample above that, drawn from its own stream seeded by ``ks_seed``); above ks_sample
-particles the passes run on ``threads`` threads, with the same rows for any count. Feed it with
+MomentsRecorder(bins=50, ks_sample=0, ks_seed=..., threads=1): speed histograms of
+``bins`` bins; the KS test of all speeds on fine bins (``ks_sample=0``, conservative) or
+exact on at most ``ks_sample`` speeds (a reproducible random subsample above that, drawn
+from its own stream seeded by ``ks_seed``). An engine's recorder reads the engine's tally,
+updated at each collision; passes over arrays run on ``threads`` threads, with the same
+rows for any count. Feed it with
 ``engine.run(..., observers=[rec])``, ``engine.observe(rec)`` or
 ``rec.observe_array(velocities, masses=None, time=0.0)``. ``columns`` names the columns,
 ``rows`` is a (observations, columns) array, ``column(name)`` one column, ``table()`` a
@@ -107,12 +109,12 @@ def _analysis(rec):
     return Analysis(**common, species_kT=species, histogram=_histogram(rec.histogram()))
 
 
-def analyse(x, masses=None, bins=50, ks_sample=1_000_000, ks_seed=None):
+def analyse(x, masses=None, bins=50, ks_sample=0, ks_seed=None):
     """The command's statistics of one state: an engine, or velocities of shape (n, dim).
 
     For an engine, the state now (mixtures: its masses); for an array, ``masses`` (length
-    n, default all 1). Returns an Analysis. The KS test uses at most ``ks_sample`` speeds
-    (see MomentsRecorder); everything else uses every particle, in one streaming pass.
+    n, default all 1). Returns an Analysis. The KS test is binned on all speeds, or exact on
+    at most ``ks_sample`` speeds (see MomentsRecorder); everything else uses every particle.
     """
     args = (bins, ks_sample) if ks_seed is None else (bins, ks_sample, ks_seed)
     rec = MomentsRecorder(*args)

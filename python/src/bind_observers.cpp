@@ -51,7 +51,7 @@ void bind_observers(py::module_& m) {
              const long long k = as_integer("ks_sample", ks_sample);
              if (b < 1 || b > 100000000)
                throw InvalidInput("bins must be in 1..1e8, got " + std::to_string(b));
-             if (k < 1) throw InvalidInput("ks_sample must be >= 1, got " + std::to_string(k));
+             if (k < 0) throw InvalidInput("ks_sample must be >= 0, got " + std::to_string(k));
              const long long t = as_integer("threads", threads);
              options::check_threads(t, "threads");
              auto r = std::make_unique<analysis::MomentsRecorder>(

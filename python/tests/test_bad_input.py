@@ -120,7 +120,7 @@ def test_analyse_bad_masses():
     with pytest.raises(ValueError):
         hg.analyse(v, bins=0)
     with pytest.raises(ValueError):
-        hg.analyse(v, ks_sample=0)
+        hg.analyse(v, ks_sample=-1)
 
 
 def test_analysis_functions_bad_input():

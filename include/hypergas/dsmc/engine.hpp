@@ -47,8 +47,10 @@
 //   self_check.hpp  the debug self-check: re-tests and block replays that count disagreements
 //   stepping.hpp    exact Poisson epochs, NTC steps and the majorant upkeep
 // This header holds the public class: construction, checkpoints, observation, run_until.
-// Observers are called every `every` time units, never per collision; the velocity array
-// is advised onto transparent huge pages (dsmc/huge_pages.hpp).
+// Observers are called every `every` time units, never per collision; what they need per
+// collision they keep in a tally (Snapshot::tally), which the candidate loop, compiled
+// once with and once without it, updates as it collides. The velocity array is advised
+// onto transparent huge pages (dsmc/huge_pages.hpp).
 #pragma once
 
 #include <algorithm>
@@ -126,12 +128,15 @@ class Engine {
            " species=" + std::to_string(int(F.species));
   }
 
-  /// Calls obs with the current state (velocities, time, counters); changes nothing.
+  /// Calls obs with the current state (velocities, time, counters) and the engine's tally
+  /// slot (hypergas/tally/tally.hpp): a tally obs installs there is kept up to date by
+  /// every later collision. Changes nothing in the trajectory.
   void observe(Observer& obs) {
     Snapshot snap = make_snapshot(s_.p);
     snap.time = s_.time;
     snap.collisions = s_.collisions;
     snap.collisions_per_particle = collisions_per_particle();
+    snap.tally = &s_.tally;
     if constexpr (F.species) {
       int ns = 1;
       for (int k = 0; k < max_species; ++k) s_.species_w[k] = s_.p.species_inv_mass(k);

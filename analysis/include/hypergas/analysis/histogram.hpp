@@ -36,6 +36,10 @@ class Histogram {
   void add(const std::vector<double>& xs);
   /// Adds the counts of `o`, which must have the same bins (throws InvalidInput otherwise).
   void merge(const Histogram& o);
+  /// Replaces the counts (bins() of them), underflow and overflow, keeping the edges: for
+  /// counts made elsewhere (a tally's fine bins). Throws InvalidInput for a wrong number
+  /// of counts or a count that is not a whole number >= 0.
+  void set_counts(const std::vector<double>& counts, double under, double over);
 
   std::size_t bins() const;
   double lower(std::size_t i) const;  ///< lower edge of bin i (units of x)

@@ -38,6 +38,23 @@ struct Moments {
   Estimate m4_ratio;
 };
 
+/// The sums over n particles behind Moments, in one velocity unit: |v|^2k (k = 1, 2, 3, 4,
+/// 6), mass-weighted |w|^4 and |w|^8 and w_x^2k (k = 1..4) with w = v sqrt(m / m_mean),
+/// and sum m v^2 (mass times velocity^2).
+struct PowerSums {
+  double n = 0.0;
+  double s2 = 0.0, s4 = 0.0, s6 = 0.0, s8 = 0.0, s12 = 0.0;
+  double w4 = 0.0, w8 = 0.0;
+  double x2 = 0.0, x4 = 0.0, x6 = 0.0, x8 = 0.0;
+  double twice_e = 0.0;
+};
+
+/// The moments of `p` for dimension `dim` and mean mass `m_mean`, with the velocity unit
+/// of the sums times `scale` (a velocity of 1 in the sums' unit is `scale` velocity
+/// units: the moments of velocity^2k are multiplied by scale^2k at the end, so sums of
+/// scaled velocities neither overflow nor lose precision). Throws InvalidInput for n < 2.
+Moments moments_from_sums(int dim, double m_mean, const PowerSums& p, double scale = 1.0);
+
 /// The power sums behind Moments, fed one particle at a time (the streaming core of
 /// compute_moments; a caller that makes its own pass over the particles, such as
 /// MomentsRecorder, adds them as it goes). `m_mean` is the mean mass (mass units) of the

@@ -17,43 +17,48 @@
 // Pooled speeds are mass-weighted (see sample.hpp). The recorder keeps the speed histograms
 // of the last snapshot (pooled and, for mixtures, per species) for speed_histogram.csv.
 //
-// Cost per snapshot of n particles: three streaming passes over the snapshot's arrays
-// (validation; counts, masses and energies; moments, histograms and the KS sample), O(n)
-// time and, besides the KS sample, O(bins + species) memory: no per-particle copy. The
-// target is n ~ 1e7 in a process whose velocities are most of its memory.
+// Where the numbers come from: a tally (hypergas/tally/tally.hpp) of the power sums and of
+// fine speed histograms, exact fixed-point sums that do not depend on the order of the
+// particles. An engine that keeps a tally (Snapshot::tally: DSMC) updates it at every
+// collision, so a row costs O(bins + fine bins): the recorder builds it once from the
+// first snapshot and hands it to the engine. Without one (EDMD, arrays from Python) each
+// row builds it in one pass over the snapshot. Either way a row is the same bit for bit,
+// for every thread count.
 //
-// The KS test needs its sample sorted, so it is the one statistic that keeps values:
-// min(n, ks_cap) doubles.
-//  - n <= ks_cap: all n speeds, as before.
-//  - n > ks_cap: a stratified random subsample of exactly k = ks_cap particles: chunk c
-//    (particles [b, e), 65536 per chunk) gives floor(k e / n) - floor(k b / n) of its
-//    particles, drawn without replacement by Floyd's algorithm. Snapshot number j (0, 1,
-//    ... in order of observation) draws chunk c's share from the stream
+// The layout of the tally, fixed by the first snapshot (the configuring one): velocities
+// scaled by a power of two near sqrt(m_mean / kT); the histogram range of make_histogram
+// at that kT, `bins` bins of `r` fine bins each, r = ceil(32 sqrt(n) / bins) (at most
+// 32768 fine bins in all); MB references, bin probabilities and the fine bins' CDF at that
+// kT. A later snapshot whose kT differs from it by more than 1e-9 relative (any engine
+// conserves energy to ~1e-13), or whose mean mass, dimension or species differ, configures
+// again. The moments are exact sums of rounded terms: they differ from plain double sums in
+// the last bits (~2^-41 / sqrt(n) relative, see tally.hpp).
+//
+// ks_p_speed. With ks_sample = 0 (the default), the KS test of all n pooled speeds against
+// MB at kT, on the fine bins: the statistic max |F_n - F| over the fine bin edges, which is
+// at most the exact KS statistic of the speeds and at least that minus the largest MB
+// probability of one fine bin (~4 / (32 sqrt(n)), an eighth of the 5% critical value
+// 1.36 / sqrt(n); at most 1.3e-4 with 32768 fine bins, for n > 1e6); p from the
+// Kolmogorov distribution of n. It is conservative (a true MB fails no more often than the
+// exact test) and resolves a deviation of the speed CDF of ~1.5 / sqrt(n) + that bin
+// probability. With ks_sample = k > 0, the exact KS test of the speeds themselves:
+//  - n <= k: all n speeds (sorted: O(n log n) per row);
+//  - n > k: a stratified random subsample of exactly k particles: chunk c (particles
+//    [b, e), 65536 per chunk) gives floor(k e / n) - floor(k b / n) of its particles,
+//    drawn without replacement by Floyd's algorithm. Snapshot number j (0, 1, ... in order
+//    of observation) draws chunk c's share from the stream
 //    Rng(ks_seed, ks_stream).split(j).split(c), so the subsample is reproducible,
-//    independent of the engine's random numbers, of the thread count and of the sizes of
-//    earlier snapshots. Which particles are taken does not depend on their speeds, so
-//    under the null hypothesis the subsample is k independent MB speeds, as a uniform
-//    subsample would be. ks_p_speed is then the p-value of the same null hypothesis
-//    (the speeds are MB at the snapshot's kT) tested with ks_cap samples: under it, it is
-//    uniform as before; its power is that of ks_cap samples, not of n (the smallest
-//    deviation of the speed CDF it resolves is ~1.36 / sqrt(ks_cap), the 5% critical value
-//    of the KS statistic: 1.4e-3 for the default cap); and it varies with the subsample, so
-//    another seed gives another p.
-//    Because kT comes mostly from particles outside the subsample, the test is then close
-//    to exact rather than conservative.
+//    independent of the engine's random numbers and of the thread count. Which particles
+//    are taken does not depend on their speeds, so under the null hypothesis it is k
+//    independent MB speeds; its power is that of k samples.
 // Histograms, distances, the chi-square test and the moments always use every particle.
 //
-// Sums over particles (moments, kT, mean masses): for n <= ks_cap they are read as plain
-// left-to-right double sums, which reproduce the files of earlier versions bit for bit;
-// for n > ks_cap they are compensated (sample.hpp), accurate to a few eps for any n. The
-// two differ by the rounding error of the plain sum, ~sqrt(n) eps relative.
-//
-// Threads (set_threads): for n > ks_cap both passes run over the chunks, chunk c on thread
-// c mod T; each chunk keeps its own sums, which are then added in chunk order
-// (RunningSum::merge), and the histograms' integer counts are added per thread. The rows
-// are therefore the same for every T. For n <= ks_cap the passes run on one thread.
+// Threads (set_threads): the passes over a snapshot run over chunks of 65536 particles,
+// chunk c on thread c mod T, each thread with its own tally; tallies are integers, so they
+// add to the same numbers for every T.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -66,26 +71,27 @@
 #include "hypergas/analysis/maxwell.hpp"
 #include "hypergas/observer.hpp"
 #include "hypergas/rng.hpp"
+#include "hypergas/tally/tally.hpp"
 #include "hypergas/thread_team.hpp"
 
 namespace hypergas::analysis {
 
 class MomentsRecorder final : public Observer {
  public:
-  /// Default largest KS sample (doubles kept per snapshot: 8 MB).
-  static constexpr std::size_t default_ks_cap = 1'000'000;
+  /// Default KS sample: 0, the binned test of all speeds (see the file comment).
+  static constexpr std::size_t default_ks_cap = 0;
   /// Default seed of the KS subsample stream.
   static constexpr std::uint64_t default_ks_seed = 0x6b735f63617073ULL;
   /// Stream number of the KS subsample (with the seed above): one no engine uses.
   static constexpr std::uint64_t ks_stream = 0x4d6f6d656e74734bULL;
 
-  /// `bins` bins for the speed histograms (>= 1); a KS test on at most `ks_cap` speeds
-  /// (>= 1; a uniform subsample above it) drawn with seed `ks_seed`. Throws InvalidInput
-  /// for bins or ks_cap < 1.
+  /// `bins` bins for the speed histograms (>= 1); the KS test binned on all speeds
+  /// (ks_cap = 0) or exact on at most `ks_cap` speeds (a stratified subsample above it,
+  /// drawn with seed `ks_seed`). Throws InvalidInput for bins < 1.
   explicit MomentsRecorder(std::size_t bins = 50, std::size_t ks_cap = default_ks_cap,
                            std::uint64_t ks_seed = default_ks_seed);
 
-  /// Runs the passes over a snapshot above the KS cap on `threads` threads (1..256; the
+  /// Runs the passes over a snapshot on `threads` threads (1..256; the
   /// rows are the same for every count). Not state: neither a checkpoint nor a copy of the
   /// recorder keeps it.
   void set_threads(int threads);
@@ -101,8 +107,13 @@ class MomentsRecorder final : public Observer {
   const std::vector<std::vector<double>>& rows() const { return rows_; }
   /// The values of one column over time; throws InvalidInput for an unknown name.
   std::vector<double> column(const std::string& name) const;
-  /// Largest KS sample (particles).
+  /// KS sample: 0 for the binned test of all speeds, else the largest exact sample.
   std::size_t ks_cap() const { return ks_cap_; }
+  /// Rows that read every particle (configuring, or an engine without a tally); the other
+  /// rows came from the engine's tally in O(bins). Not state.
+  std::uint64_t passes() const { return passes_; }
+  /// Fine bins of the tally's histograms (0 before the first snapshot).
+  std::size_t fine_bins() const { return cfg_.layout.fine; }
 
   /// Writes moments.csv (atomically). Throws InvalidInput if nothing was observed.
   void write_moments_csv(const std::string& path) const;
@@ -125,15 +136,40 @@ class MomentsRecorder final : public Observer {
   void io(Archive& a) {
     a.tag("moments-recorder");
     a(bins_, ks_cap_, ks_rng_, n_species_, dim_, columns_, rows_, last_histograms_, last_refs_);
-    if constexpr (!Archive::saving) check_restored();
+    a(cfg_);
+    if constexpr (!Archive::saving) {
+      check_restored();
+      derive_tables();
+    }
   }
 
  private:
   static_assert(std::is_trivially_copyable_v<Rng>, "io() saves the KS stream as raw bytes");
   static_assert(std::is_trivially_copyable_v<MaxwellReference>);
 
+  /// What the configuring snapshot fixed (saved in checkpoints; the tables below follow
+  /// from it).
+  struct Config {
+    bool set = false;
+    double kT = 0.0;      // energy units
+    double scale = 1.0;   // 1 / c: a scaled velocity of 1 in velocity units
+    std::array<double, 1 + max_species> lo{}, hi{}, mass{};  // per histogram (velocity, mass)
+    tally::Layout layout;
+  };
+  static_assert(std::is_trivially_copyable_v<Config>);
+
   void check_restored() const;
-  /// Particles per chunk of the passes above the KS cap.
+  /// Chooses the layout from a snapshot (a pass for its temperature) and derives the tables.
+  void configure(const Snapshot& s, int ns);
+  /// The references, empty histograms, bin probabilities and fine CDF of cfg_.
+  void derive_tables();
+  /// A tally of cfg_'s layout from one pass over s (on the recorder's threads).
+  tally::Tally pass(const Snapshot& s) const;
+  /// The row of a tally that fits cfg_, or false if its kT is too far from cfg_'s.
+  bool record(const Snapshot& s, const tally::Tally& t);
+  /// The exact KS sample (ks_cap_ > 0) of snapshot number `row`.
+  std::vector<double> ks_sample(const Snapshot& s, double m_mean, std::size_t row) const;
+  /// Particles per chunk of the passes.
   static constexpr std::size_t chunk_size = std::size_t{1} << 16;
   /// f(thread, chunk) for chunks 0..chunks-1, chunk c on thread c mod T; rethrows the
   /// first exception of a thread.
@@ -150,6 +186,12 @@ class MomentsRecorder final : public Observer {
   std::vector<Histogram> last_histograms_;  // pooled, then species 0, 1, ... (mixtures)
   std::vector<MaxwellReference> last_refs_;
   int dim_ = 0;
+  Config cfg_;
+  // derived from cfg_ (derive_tables)
+  std::vector<Histogram> empty_;                 // the histograms' edges, no counts
+  std::vector<std::vector<double>> probs_;       // their MB bin probabilities at cfg_.kT
+  std::vector<double> fine_cdf_;                 // MB CDF of the pooled speed at fine edges
+  std::uint64_t passes_ = 0;
   /// The thread team of set_threads; a copy of the recorder gets none (one thread), so
   /// that two recorders never drive one team.
   struct Team {

@@ -31,6 +31,7 @@ struct Lane {
   bool raised = false;                   // exact scheme: the lane stopped at a raise
   std::uint64_t raise_at = 0;            // block position of the raising candidate
   double raise_s2 = 0.0;
+  tally::Tally delta;                    // threads after the first: their tally changes
   char pad[64];                          // two lanes' counters never share a cache line
 };
 
@@ -46,11 +47,13 @@ struct Lane {
 /// earlier chunk (lane.earlier) or of a candidate deferred before it (lane.held) is
 /// skipped and listed in lane.deferred (dsmc/level_schedule.hpp). Save: the old
 /// velocities of every applied candidate are kept so that the block can undo them.
+/// Every collision is reported to `hook` (state.hpp).
 /// Returns `count`, or (exact scheme) the position after the candidate that raised the
 /// bound; the lane's collisions and raise are in lane.
-template <bool Exact, bool Defer, bool Save, int D, class Model, Features F>
+template <bool Exact, bool Defer, bool Save, class Hook = NoHook, int D, class Model,
+          Features F>
 std::uint64_t run_lane(State<D, Model, F>& s, Lane& lane, std::uint64_t first,
-                       std::uint64_t count, double G) {
+                       std::uint64_t count, double G, const Hook& hook = Hook{}) {
   constexpr int B = batch_size;
   constexpr int stride = State<D, Model, F>::stride;
   const double* const v = s.p.velocity_data().data();
@@ -108,7 +111,7 @@ std::uint64_t run_lane(State<D, Model, F>& s, Lane& lane, std::uint64_t first,
         for (int d = 0; d < D; ++d) lane.saved.push_back(v[std::size_t(i) * stride + d]);
         for (int d = 0; d < D; ++d) lane.saved.push_back(v[std::size_t(j) * stride + d]);
       }
-      const double s2 = s.collide(i, j, first + at + std::uint64_t(c));
+      const double s2 = s.collide(i, j, first + at + std::uint64_t(c), hook);
       ++lane.collisions;
       if constexpr (Model::needs_majorant) {
         // later candidates of the batch that share particle i or j: decided again

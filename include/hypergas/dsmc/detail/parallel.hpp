@@ -53,8 +53,34 @@ class ParallelBlocks {
   ///  2. thread 0 takes the deferred candidates in block order up to the first raise of
   ///     the bound, undoes what later chunks applied after that raise and ends the epoch
   ///     there; meanwhile every thread draws its chunk of block b + 1 and fills its set.
+  ///
+  /// With a tally (State::tally), thread 0 applies its collisions, the deferred ones and
+  /// the undoing to it, the other threads to their lane's delta, and the deltas are merged
+  /// at the end: integer sums, the same for every thread count.
   template <bool Exact, int D, class Model, Features F>
   std::uint64_t process(State<D, Model, F>& s, std::uint64_t m) {
+    if (!s.tally.tally) return process<Exact>(s, m, NoHook{}, [](int) { return NoHook{}; });
+    tally::Tally& main = *s.tally.tally;
+    for (std::size_t t = 1; t < lanes_.size(); ++t)
+      if (!(lanes_[t].delta.layout() == main.layout())) lanes_[t].delta = tally::Tally(main.layout());
+    const TallyHook first{&main};
+    const std::uint64_t done = process<Exact>(s, m, first, [&](int t) {
+      TallyHook h = first;
+      if (t > 0) h.t = &lanes_[std::size_t(t)].delta;
+      return h;
+    });
+    for (std::size_t t = 1; t < lanes_.size(); ++t) {
+      main.merge(lanes_[t].delta);
+      lanes_[t].delta.clear();
+    }
+    return done;
+  }
+
+ private:
+  /// process() with the hook of thread 0 (`first`) and hook_of(t) for thread t.
+  template <bool Exact, int D, class Model, Features F, class Hook, class HookOf>
+  std::uint64_t process(State<D, Model, F>& s, std::uint64_t m, const Hook& first,
+                        HookOf&& hook_of) {
     ThreadTeam& team = *team_;
     const int T = team.size();
     const double G = s.bound.bound();
@@ -87,6 +113,7 @@ class ParallelBlocks {
 
     team.run([&](int t) {
       Lane& lane = lanes_[std::size_t(t)];
+      const Hook hook = hook_of(t);
       std::uint64_t start = 0;
       std::uint32_t nb = block_after(0);
       prepare(0, nb, t);
@@ -103,11 +130,11 @@ class ParallelBlocks {
         lane.collisions = 0;
         lane.raise_s2 = 0.0;
         lane.raised = false;
-        const std::uint64_t first = K0 + start + lo;
+        const std::uint64_t first_k = K0 + start + lo;
         const std::uint64_t ran =
-            t == 0 ? run_lane<Exact, false, false>(s, lane, first, hi - lo, G)
-                   : run_lane<Exact, true, Exact && Model::needs_majorant>(s, lane, first,
-                                                                          hi - lo, G);
+            t == 0 ? run_lane<Exact, false, false>(s, lane, first_k, hi - lo, G, hook)
+                   : run_lane<Exact, true, Exact && Model::needs_majorant>(s, lane, first_k,
+                                                                          hi - lo, G, hook);
         lane.raise_at = lane.raised ? lo + ran - 1 : nb;
         team.sync();
         // 2. the block's end on thread 0; the next block's sets on all
@@ -115,7 +142,8 @@ class ParallelBlocks {
         const std::uint32_t nn = next < m ? block_after(next) : 0;
         if (t == 0) {
           bool raised = false;
-          const std::uint32_t processed = finish_block<Exact>(s, K0 + start, nb, G, raised);
+          const std::uint32_t processed =
+              finish_block<Exact>(s, K0 + start, nb, G, raised, first);
           if (s.self_check) [[unlikely]] {
             check_block<Exact>(s, before, K0 + start, processed, raised, G);
             save_velocities(s, before);
@@ -133,14 +161,13 @@ class ParallelBlocks {
     return done;
   }
 
- private:
   /// Phase 2 of a block on thread 0: the deferred candidates in block order up to the
   /// first raise (exact scheme), the undoing of what later chunks applied after it, the
   /// counters. Returns the number of candidates the block processed (up to and including
   /// the raising one); `raised` tells whether the epoch ends there.
-  template <bool Exact, int D, class Model, Features F>
+  template <bool Exact, int D, class Model, Features F, class Hook>
   std::uint32_t finish_block(State<D, Model, F>& s, std::uint64_t base, std::uint32_t nb,
-                             double G, bool& raised) {
+                             double G, bool& raised, const Hook& hook) {
     raised = false;
     std::uint32_t stop_at = nb;  // block position of the first raise
     double stop_s2 = 0.0, ntc_raise = 0.0;
@@ -161,7 +188,7 @@ class ParallelBlocks {
         double u;
         s.draw(base + c, i, j, u);
         if (!s.accepts(i, j, u, G)) continue;
-        const double s2 = s.collide(i, j, base + c);
+        const double s2 = s.collide(i, j, base + c, hook);
         ++coll;
         if constexpr (Model::needs_majorant) {
           if (s.bound.exceeded_by(s2)) {
@@ -188,6 +215,9 @@ class ParallelBlocks {
             if (w.saved_at[a] <= stop_at) break;
             const std::uint32_t i = w.saved_ij[2 * a], j = w.saved_ij[2 * a + 1];
             const double* o = w.saved.data() + a * 2 * D;
+            if constexpr (Hook::active)
+              hook.collided(s.p, i, j, v + std::size_t(i) * stride, v + std::size_t(j) * stride,
+                            o, o + D);
             for (int d = 0; d < D; ++d) {
               v[std::size_t(i) * stride + d] = o[d];
               v[std::size_t(j) * stride + d] = o[D + d];

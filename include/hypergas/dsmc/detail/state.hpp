@@ -19,9 +19,31 @@
 #include "hypergas/dsmc/update.hpp"
 #include "hypergas/particles.hpp"
 #include "hypergas/rng.hpp"
+#include "hypergas/tally/tally.hpp"
 #include "hypergas/vec.hpp"
 
 namespace hypergas::dsmc::detail {
+
+/// What a collision reports to: nothing (NoHook, the plain kernel) or a tally
+/// (TallyHook: the old and new velocities of both particles, hypergas/tally/tally.hpp).
+/// The candidate loop is compiled once for each, so a run without a tally runs the
+/// same code as an engine that has none.
+struct NoHook {
+  static constexpr bool active = false;
+};
+struct TallyHook {
+  static constexpr bool active = true;
+  tally::Tally* t = nullptr;
+  /// Particles i and j went from oi, oj to ni, nj.
+  template <int D, Features F>
+  [[gnu::always_inline]] void collided(const Particles<D, F>& p, std::uint32_t i,
+                                       std::uint32_t j, const double* oi, const double* oj,
+                                       const double* ni, const double* nj) const {
+    int si = 0, sj = 0;
+    if constexpr (F.species) si = p.species(i), sj = p.species(j);
+    t->exchange<D, F.species>(oi, oj, ni, nj, si, sj);
+  }
+};
 
 /// Shared state of Engine<D, Model, F>: plain data with the per-candidate kernel. Every
 /// member but `draws` is saved by the engine's io() (the draws are a function of the seed).
@@ -50,6 +72,7 @@ struct State {
   bool self_check = false;
   std::uint64_t check_failures = 0;
   std::array<double, max_species> species_w{};  // the observers' species mass table
+  tally::Slot tally;      // the collision-level observer's tally, if one was installed
 
   /// Candidate K: its pair and acceptance uniform (candidates.hpp).
   void draw(std::uint64_t K, std::uint32_t& i, std::uint32_t& j, double& u) const {
@@ -73,9 +96,11 @@ struct State {
       return true;
     }
   }
-  /// Collides pair (i, j) as candidate K (its scattering words from word 2 of K on);
-  /// returns the larger of the two new squared speeds.
-  [[gnu::always_inline]] double collide(std::uint32_t i, std::uint32_t j, std::uint64_t K) {
+  /// Collides pair (i, j) as candidate K (its scattering words from word 2 of K on) and
+  /// reports it to `hook`; returns the larger of the two new squared speeds.
+  template <class Hook = NoHook>
+  [[gnu::always_inline]] double collide(std::uint32_t i, std::uint32_t j, std::uint64_t K,
+                                        const Hook& hook = Hook{}) {
     using Map = Eigen::Map<Vec<D>>;
     double* v = p.velocity_data().data();
     Map vi(v + std::size_t(i) * stride), vj(v + std::size_t(j) * stride);
@@ -83,7 +108,14 @@ struct State {
     const Vec<D> g = vi - vj;
     const double gn = std::sqrt(g.squaredNorm());
     const Vec<D> delta = Model::template deflect<D>(g, gn, rng_k) - g;
-    apply_deflection<D>(p, i, j, vi, vj, delta);
+    if constexpr (Hook::active) {
+      const Vec<D> oi = vi, oj = vj;
+      apply_deflection<D>(p, i, j, vi, vj, delta);
+      hook.collided(p, i, j, oi.data(), oj.data(), vi.data(), vj.data());
+    } else {
+      (void)hook;
+      apply_deflection<D>(p, i, j, vi, vj, delta);
+    }
     if constexpr (Model::needs_majorant)
       return std::max(vi.squaredNorm(), vj.squaredNorm());
     else

@@ -50,7 +50,11 @@ std::uint64_t process(State<D, Model, F>& s, ParallelBlocks& blocks, std::uint64
     k = blocks.process<Exact>(s, m);
   } else {
     Lane lane;
-    k = run_lane<Exact, false, false>(s, lane, s.candidates, m, s.bound.bound());
+    if (s.tally.tally)
+      k = run_lane<Exact, false, false>(s, lane, s.candidates, m, s.bound.bound(),
+                                        TallyHook{s.tally.tally.get()});
+    else
+      k = run_lane<Exact, false, false>(s, lane, s.candidates, m, s.bound.bound());
     s.collisions += lane.collisions;
     s.raise_to = std::max(s.raise_to, lane.raise_s2);
   }

@@ -129,7 +129,8 @@ void add_bench_options(CLI::App& app, BenchOptions& o) {
   add_number(app, "--threads,-j", o.threads,
              "dsmc: thread counts to time one system with, each as `run --threads` allows "
              "(repeatable or comma-separated: -j 1,2); each line adds speedup and efficiency "
-             "against the first")
+             "against the first, the ceiling (T one-thread engines run at once: their summed "
+             "rate over one alone) and each thread's phase ticks per candidate")
       ->delimiter(',');
   add_number(app, "--seed", o.seed, "random seed");
 }

@@ -107,13 +107,13 @@ def test_edmd_matches_the_command(cli, tmp_path, packing, start):
 def test_threads_give_the_same_velocities():
     runs = []
     for t in (1, 2, 3):
-        g = hg.DSMC(dim=3, n=40000, init="cube", seed=5, threads=t)
+        g = hg.DSMC(dim=3, n=64000, init="cube", seed=5, threads=t)
         g.run(1.5)
         runs.append((g.collisions, g.velocities.copy()))
     for c, v in runs[1:]:
         assert c == runs[0][0]
         np.testing.assert_array_equal(v, runs[0][1])
-    g = hg.DSMC(n=40000)
+    g = hg.DSMC(n=64000)
     g.threads = 2
     assert g.threads == 2
 

@@ -58,25 +58,11 @@ double pair_update_probe(std::size_t n, double updates, std::uint64_t seed, bool
   return static_cast<double>(m) / w;
 }
 
-/// Aggregate rate of T probes run at the same time, each on its own array, over the rate of
-/// one: how much T threads of independent random pair updates gain on this machine, the
-/// ceiling for any T-thread speed-up of the engine.
-template <int D>
-double concurrent_probe_gain(std::size_t n, int T, double updates, std::uint64_t seed) {
-  const double one = pair_update_probe<D>(n, updates, seed, false);
-  std::vector<double> rate(static_cast<std::size_t>(T));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < T; ++t)
-    pool.emplace_back([&, t] { rate[std::size_t(t)] = pair_update_probe<D>(n, updates, seed + t, false); });
-  rate[0] = pair_update_probe<D>(n, updates, seed, false);
-  for (auto& th : pool) th.join();
-  double total = 0.0;
-  for (double r : rate) total += r;
-  return total / one;
-}
-
 struct DsmcPoint {
-  double collisions_per_s, candidates_per_s, acceptance, bytes_per_particle, wall_s;
+  double collisions_per_s = 0.0, candidates_per_s = 0.0, acceptance = 0.0,
+         bytes_per_particle = 0.0, wall_s = 0.0;
+  double ticks_per_s = 0.0;                    // the phase clock's rate (TSC)
+  std::vector<dsmc::PhaseTicks> schedule;      // per thread (empty on one thread)
 };
 
 template <int D, class Model>
@@ -90,57 +76,122 @@ DsmcPoint time_engine(std::size_t n, int threads, double min_collisions, std::ui
   dsmc::Engine<D, Model> e(cfg);
   e.set_threads(threads);
   e.run_until(0.5);
+  e.reset_schedule_profile();
   const auto c0 = e.collisions(), k0 = e.candidates();
   const double t_run = 2.0 * min_collisions / static_cast<double>(n);
+  const std::uint64_t tick0 = dsmc::detail::ticks_now();
   const Stopwatch clock(cpu_clock && threads == 1);
   e.run_until(e.time() + t_run);
   const double w = clock.seconds();
+  const double ticks = static_cast<double>(dsmc::detail::ticks_now() - tick0);
   const double dc = static_cast<double>(e.collisions() - c0);
   const double dk = static_cast<double>(e.candidates() - k0);
-  return {dc / w, dk / w, dc / dk, e.bytes_per_particle(), w};
+  return {dc / w, dk / w, dc / dk, e.bytes_per_particle(), w, ticks / w, e.schedule_profile()};
 }
 
-/// One line per thread count; the runs of the thread counts alternate within each repeat
-/// so that drifts of a shared machine hit all of them alike.
+/// The machine's ceiling for T threads: T independent one-thread engines (seeds differ)
+/// started together, each on its own gas; returns their summed collision rate.
+template <int D, class Model>
+double concurrent_engines(std::size_t n, int T, double min_collisions, std::uint64_t seed) {
+  std::vector<double> rate(static_cast<std::size_t>(T));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < T; ++t)
+    pool.emplace_back([&, t] {
+      rate[std::size_t(t)] =
+          time_engine<D, Model>(n, 1, min_collisions, seed + 1000u * std::uint64_t(t), false)
+              .collisions_per_s;
+    });
+  rate[0] = time_engine<D, Model>(n, 1, min_collisions, seed, false).collisions_per_s;
+  for (auto& th : pool) th.join();
+  double total = 0.0;
+  for (double r : rate) total += r;
+  return total;
+}
+
+/// "schedule":[{"thread":0,"draw_set":..,...,"deferred":..},...]: each thread's ticks per
+/// phase per candidate of the system (a thread's phases sum to the wall ticks per
+/// candidate), and the fraction of its own candidates that it deferred.
+std::string schedule_json(const std::vector<std::vector<dsmc::PhaseTicks>>& reps) {
+  if (reps.empty() || reps.front().empty()) return "";
+  std::vector<dsmc::PhaseTicks> sum(reps.front().size());
+  for (const auto& r : reps)
+    for (std::size_t t = 0; t < r.size() && t < sum.size(); ++t) sum[t].add(r[t]);
+  double cand = 0.0;
+  for (const auto& p : sum) cand += static_cast<double>(p.candidates);
+  if (cand <= 0.0) return "";
+  std::string j = ",\"schedule\":[";
+  char buf[128];
+  for (std::size_t t = 0; t < sum.size(); ++t) {
+    std::snprintf(buf, sizeof buf, "%s{\"thread\":%zu", t ? "," : "", t);
+    j += buf;
+    for (int ph = 0; ph < dsmc::phase_count; ++ph) {
+      std::snprintf(buf, sizeof buf, ",\"%s\":%.2f", dsmc::phase_names[std::size_t(ph)],
+                    static_cast<double>(sum[t].ticks[std::size_t(ph)]) / cand);
+      j += buf;
+    }
+    std::snprintf(buf, sizeof buf, ",\"deferred\":%.4f}",
+                  static_cast<double>(sum[t].deferred) /
+                      std::max(1.0, static_cast<double>(sum[t].candidates)));
+    j += buf;
+  }
+  return j + "]";
+}
+
+/// One line per thread count. Within each repeat, a one-thread engine, the runs of every
+/// thread count and the ceiling runs alternate, so that drifts of a shared machine hit all
+/// of them alike.
 template <int D, class Model>
 void bench_point(std::ostream& out, const DsmcBenchOptions& o, std::size_t n) {
   const std::size_t nt = o.threads.size();
-  std::vector<std::vector<double>> rate(nt), cand(nt), acc(nt);
-  std::vector<double> probe;
+  std::vector<std::vector<double>> rate(nt), cand(nt), acc(nt), gain(nt), tick_rate(nt);
+  std::vector<std::vector<std::vector<dsmc::PhaseTicks>>> schedule(nt);
+  std::vector<double> probe, alone;
   double bytes = 0.0;
   for (int r = 0; r < o.reps; ++r) {
+    const std::uint64_t seed = o.seed + std::uint64_t(r);
+    double one = 0.0;  // the one-thread rate of this repeat
     for (std::size_t k = 0; k < nt; ++k) {
       const DsmcPoint p =
-          time_engine<D, Model>(n, o.threads[k], o.min_collisions, o.seed + r, o.cpu_clock);
+          time_engine<D, Model>(n, o.threads[k], o.min_collisions, seed, o.cpu_clock);
       rate[k].push_back(p.collisions_per_s);
       cand[k].push_back(p.candidates_per_s);
       acc[k].push_back(p.acceptance);
+      tick_rate[k].push_back(p.ticks_per_s);
+      schedule[k].push_back(p.schedule);
       bytes = p.bytes_per_particle;
+      if (o.threads[k] == 1 && one == 0.0) one = p.collisions_per_s;
     }
+    bool multi = false;
+    for (int t : o.threads) multi |= t > 1;
+    if (multi && one == 0.0)
+      one = time_engine<D, Model>(n, 1, o.min_collisions, seed, false).collisions_per_s;
+    for (std::size_t k = 0; k < nt; ++k)
+      gain[k].push_back(o.threads[k] > 1 ? concurrent_engines<D, Model>(n, o.threads[k],
+                                                                        o.min_collisions, seed) /
+                                               one
+                                         : 1.0);
     probe.push_back(
-        pair_update_probe<D>(n, std::max(2e6, o.min_collisions), o.seed + r, o.cpu_clock));
+        pair_update_probe<D>(n, std::max(2e6, o.min_collisions), seed, o.cpu_clock));
+    alone.push_back(one);
   }
   const double pr = median(probe), base = median(rate[0]);
   for (std::size_t k = 0; k < nt; ++k) {
     const double cr = median(rate[k]);
-    const double ceiling =
-        o.threads[k] > 1
-            ? concurrent_probe_gain<D>(n, o.threads[k], std::max(2e6, o.min_collisions), o.seed)
-            : 1.0;
+    const double ceiling = median(gain[k]);
     const double speedup = cr / base * o.threads[0];
-    char buf[640];
+    char buf[768];
     std::snprintf(buf, sizeof buf,
                   "{\"bench\":\"dsmc\",\"engine\":\"dsmc\",\"model\":\"%s\",\"dim\":%d,\"n\":%zu,"
                   "\"reps\":%d,\"collisions_per_s\":%.4g,\"candidates_per_s\":%.4g,"
                   "\"acceptance\":%.4f,\"bytes_per_particle\":%.1f,"
                   "\"probe_pair_updates_per_s\":%.4g,\"probe_ratio\":%.4f,\"threads\":%d,"
-                  "\"speedup\":%.3f,\"efficiency\":%.3f,\"probe_gain\":%.3f,"
-                  "\"clock\":\"%s\"}",
+                  "\"speedup\":%.3f,\"efficiency\":%.3f,\"ceiling\":%.3f,\"of_ceiling\":%.3f,"
+                  "\"ticks_per_s\":%.4g,\"clock\":\"%s\"",
                   std::string(Model::name).c_str(), D, n, o.reps, cr, median(cand[k]),
                   median(acc[k]), bytes, pr, cr / pr, o.threads[k], speedup,
-                  speedup / o.threads[k], ceiling,
+                  speedup / o.threads[k], ceiling, speedup / ceiling, median(tick_rate[k]),
                   o.cpu_clock && o.threads[k] == 1 ? "cpu" : "wall");
-    out << buf << '\n' << std::flush;
+    out << buf << schedule_json(schedule[k]) << "}\n" << std::flush;
   }
 }
 

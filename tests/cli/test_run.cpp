@@ -161,9 +161,9 @@ TEST_CASE("run --replicas 2 runs two DSMC replicas; replica 0 equals the one-rep
 }
 
 TEST_CASE("run --threads T writes the same files for T = 1, 2, 3", "[cli]") {
-  // 30000 particles: above the size where the engine splits candidate blocks over threads.
+  // 64000 particles: the smallest 3D system the engine splits over threads.
   cli_test::Scratch s("threads");
-  const std::vector<std::string> base{"run", "--dim", "3", "--n", "30000", "--until", "2",
+  const std::vector<std::string> base{"run", "--dim", "3", "--n", "64000", "--until", "2",
                                       "--init", "beams", "--seed", "5"};
   for (const char* t : {"1", "2", "3"}) {
     auto args = base;

@@ -61,6 +61,7 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "hypergas/checkpoint.hpp"
 #include "hypergas/dsmc/config.hpp"
@@ -200,12 +201,13 @@ class Engine {
   std::uint64_t self_check_failures() const { return s_.check_failures; }
   /// Runs one system on `threads` threads (1 .. 256). The result is bit for bit the same for
   /// every thread count; `block` (candidates per parallel block, 0: chosen from N) only
-  /// changes the speed. Below about 20000 particles several threads would only wait for
-  /// each other, so the one-thread loop runs unless a block size is given.
+  /// changes the speed. A gas whose velocities fit in a core's cache (below 64 000 particles
+  /// in 3D, 32 000 in 6D: ParallelBlocks::min_parallel_bytes) runs the one-thread loop
+  /// unless a block size is given: there more threads would be slower.
   void set_threads(int threads, std::uint32_t block = 0) {
     if (threads < 1 || threads > 256)
       throw InvalidInput("DSMC: threads must be in 1..256, got " + std::to_string(threads));
-    blocks_.configure(threads, block, s_.n);
+    blocks_.configure(threads, block, s_.n, stride);
   }
   /// Sets a function called between epochs (exact scheme: every ~2N candidates and at each
   /// bound raise) and between NTC steps, with the engine consistent at time(); it may throw
@@ -214,6 +216,13 @@ class Engine {
   void set_poll(std::function<void()> poll) { poll_ = std::move(poll); }
   /// Threads that process one candidate block together (1: the one-thread loop).
   int threads() const { return blocks_.threads(); }
+  /// Candidates per parallel block (0: the one-thread loop runs).
+  std::uint32_t block_size() const { return blocks_.block(); }
+  /// Per thread of the team: ticks spent in each phase of the block schedule
+  /// (detail/phase_clock.hpp) since set_threads() or reset_schedule_profile(); empty when
+  /// the one-thread loop runs. Not state.
+  const std::vector<PhaseTicks>& schedule_profile() const { return blocks_.profile(); }
+  void reset_schedule_profile() { blocks_.reset_profile(); }
   /// Current majorant bound G >= |g| (velocity units).
   double bound() const { return s_.bound.bound(); }
   const Config& config() const { return s_.cfg; }

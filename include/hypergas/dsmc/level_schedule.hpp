@@ -2,11 +2,11 @@
 //
 // The sequential process takes candidates in order; candidate c depends on an earlier
 // candidate only through a shared particle (two candidates on disjoint pairs commute). A
-// block of candidates is cut into T contiguous chunks, one per thread. Before the block,
-// thread t draws the candidates of the chunks before its own again and puts their
-// particles into a set (ParticleFilter: a small table in the core's own cache; the velocity
-// array is not touched). Then each thread runs through its chunk in order and defers
-// candidate c when
+// block of candidates is cut into T contiguous chunks, one per thread. While running its
+// chunk of the block before, each thread draws the pairs of its chunk of this block into a
+// shared array; thread t then puts the particles of the chunks before its own into a set
+// (ParticleFilter: a bit table in the core's own cache; the velocity array is not touched).
+// Then each thread runs through its chunk in order and defers candidate c when
 //   - a particle of c is in the set of an earlier chunk (c may depend on that chunk), or
 //   - a particle of c belongs to a candidate deferred earlier in its own chunk;
 // all other candidates are processed at once, each thread in its chunk's order. Thread 0
@@ -38,74 +38,45 @@
 namespace hypergas::dsmc::detail {
 
 /// A set of particle indices that may answer "yes" for a particle it does not hold, never
-/// "no" for one it holds: deferring too much is safe. It is a direct-mapped table with at
-/// least 8 slots per particle it will hold: a slot keeps the one particle that hashed there,
-/// or a mark that two or more did (then every particle hashing there reads as held; a
-/// particle not held reads as held with probability about (n / slots)^2 / 2 < 1 %). A look-up
-/// is one load and a compare, with no branch to mispredict; emptying it rewrites only the
-/// slots that were used.
+/// "no" for one it holds: deferring too much is safe. It is a table of bits, at least
+/// `bits_per_key` per particle it is reserved for, and a particle sets (and reads) the one
+/// bit its hash picks: a particle not held reads as held with probability about
+/// keys / bits (below 1 % at the reserved load; more insertions than reserved only raise
+/// that probability). An insertion is one load, an or and a store, a look-up one load and a
+/// test, with no branch; emptying it clears the table's used part, one word per 64 bits.
+/// docs/benchmarks.md ("One system on T threads") compares it with the table of particle
+/// indices it replaced.
 class ParticleFilter {
  public:
-  /// Empties the filter and makes room for `count` insertions at the stated load.
+  static constexpr std::size_t bits_per_key = 128;
+
+  /// Empties the filter and sizes it for `count` insertions.
   void reserve(std::size_t count) {
-    clear();
-    std::size_t cap = 1024;
-    while (cap < 8 * count) cap *= 2;
-    if (slots_.size() < cap) {
-      slots_.assign(cap, 0u);
-      shift_ = 64;
-      for (std::size_t c = cap; c > 1; c /= 2) --shift_;
-    }
-    grow_at_ = slots_.size() / 8;
+    std::size_t bits = 4096;
+    while (bits < bits_per_key * count) bits *= 2;
+    words_ = bits / 64;
+    if (table_.size() < words_) table_.assign(words_, 0u);
+    else std::fill_n(table_.begin(), words_, std::uint64_t{0});
+    shift_ = 64;
+    for (std::size_t c = bits; c > 1; c /= 2) --shift_;
   }
-  void clear() {
-    for (const std::uint32_t s : used_) slots_[s] = 0u;
-    used_.clear();
-    keys_.clear();
-  }
-  bool empty() const { return keys_.empty(); }
   void insert(std::uint32_t p) {
-    if (keys_.size() >= grow_at_) [[unlikely]]
-      regrow();
-    keys_.push_back(p);
-    place(p);
+    const std::uint64_t h = hash(p);
+    table_[h >> 6] |= std::uint64_t{1} << (h & 63);
   }
   /// True if p was inserted (and, rarely, if it was not).
   bool contains(std::uint32_t p) const {
-    const std::uint32_t x = slots_[home(p)];
-    return x == p + 1 || x == shared;
+    const std::uint64_t h = hash(p);
+    return (table_[h >> 6] >> (h & 63)) & 1u;
   }
 
  private:
-  static constexpr std::uint32_t shared = 0xffffffffu;  // two or more particles here
-  std::size_t home(std::uint32_t p) const {
-    return static_cast<std::size_t>((std::uint64_t(p) * 0x9e3779b97f4a7c15ULL) >> shift_);
+  std::uint64_t hash(std::uint32_t p) const {
+    return (std::uint64_t(p) * 0x9e3779b97f4a7c15ULL) >> shift_;
   }
-  void place(std::uint32_t p) {
-    const std::size_t s = home(p);
-    const std::uint32_t key = p + 1;  // 0: empty
-    const std::uint32_t old = slots_[s];
-    if (old == 0) {
-      slots_[s] = key;
-      used_.push_back(static_cast<std::uint32_t>(s));
-    } else if (old != key) {
-      slots_[s] = shared;
-    }
-  }
-  void regrow() {  // more insertions than reserved: a table twice as large, filled again
-    for (const std::uint32_t s : used_) slots_[s] = 0u;
-    used_.clear();
-    slots_.assign(std::max<std::size_t>(1024, 2 * slots_.size()), 0u);
-    shift_ = 64;
-    for (std::size_t c = slots_.size(); c > 1; c /= 2) --shift_;
-    grow_at_ = slots_.size() / 8;
-    for (const std::uint32_t p : keys_) place(p);
-  }
-  std::vector<std::uint32_t> slots_;
-  std::vector<std::uint32_t> used_;  // slots written since the last clear
-  std::vector<std::uint32_t> keys_;  // particles inserted since the last clear
-  std::size_t grow_at_ = 0;
-  int shift_ = 54;
+  std::vector<std::uint64_t> table_;
+  std::size_t words_ = 0;
+  int shift_ = 52;
 };
 
 }  // namespace hypergas::dsmc::detail

@@ -26,13 +26,23 @@ struct Lane {
   std::vector<std::uint32_t> saved_at;   // block positions of applied candidates, ascending
   std::vector<std::uint32_t> saved_ij;   // their pairs
   std::vector<double> saved;             // their old velocities (2 D each)
-  ParticleFilter earlier, held;          // particles of earlier chunks; of deferred ones
+  ParticleFilter held;                   // particles of earlier chunks and of deferred candidates
   std::uint64_t collisions = 0;
   bool raised = false;                   // exact scheme: the lane stopped at a raise
   std::uint64_t raise_at = 0;            // block position of the raising candidate
   double raise_s2 = 0.0;
   tally::Tally delta;                    // threads after the first: their tally changes
   char pad[64];                          // two lanes' counters never share a cache line
+};
+
+/// Pairs drawn ahead: while a thread runs its chunk of one block, it also draws the pairs
+/// of its chunk of the next block (count of them, from candidate `first` on) into `ij`, so
+/// that later threads can fill their conflict sets from them (parallel.hpp). The loop is
+/// bound by memory latency, and the draws fill its stalls.
+struct DrawAhead {
+  std::uint64_t first = 0;
+  std::uint64_t count = 0;
+  std::uint32_t* ij = nullptr;
 };
 
 /// Runs candidates first .. first + count - 1 (lane positions 0 .. count - 1) through
@@ -44,16 +54,19 @@ struct Lane {
 /// one at a time.
 ///
 /// Defer: the lane is a later chunk of a parallel block; a candidate on a particle of an
-/// earlier chunk (lane.earlier) or of a candidate deferred before it (lane.held) is
+/// earlier chunk or of a candidate deferred before it (both in lane.held) is
 /// skipped and listed in lane.deferred (dsmc/level_schedule.hpp). Save: the old
 /// velocities of every applied candidate are kept so that the block can undo them.
+/// Ahead: one pair of `ahead` is drawn with each candidate, the rest at the end; the thread
+/// lanes also call the scattering out of line (State::collide).
 /// Every collision is reported to `hook` (state.hpp).
 /// Returns `count`, or (exact scheme) the position after the candidate that raised the
 /// bound; the lane's collisions and raise are in lane.
-template <bool Exact, bool Defer, bool Save, class Hook = NoHook, int D, class Model,
-          Features F>
-std::uint64_t run_lane(State<D, Model, F>& s, Lane& lane, std::uint64_t first,
-                       std::uint64_t count, double G, const Hook& hook = Hook{}) {
+template <bool Exact, bool Defer, bool Save, bool Ahead = false, class Hook = NoHook, int D,
+          class Model, Features F>
+[[gnu::noinline]] std::uint64_t run_lane(State<D, Model, F>& s, Lane& lane, std::uint64_t first,
+                       std::uint64_t count, double G, const Hook& hook = Hook{},
+                       DrawAhead ahead = {}) {
   constexpr int B = batch_size;
   constexpr int stride = State<D, Model, F>::stride;
   const double* const v = s.p.velocity_data().data();
@@ -66,14 +79,16 @@ std::uint64_t run_lane(State<D, Model, F>& s, Lane& lane, std::uint64_t first,
       const std::uint64_t q = at + std::uint64_t(c);
       if (whole || q < count) {
         s.draw(first + q, b.i[c], b.j[c], b.u[c]);
+        if constexpr (Ahead) {
+          if (q < ahead.count) s.draw_pair(ahead.first + q, ahead.ij[2 * q], ahead.ij[2 * q + 1]);
+        }
       } else {
         b.skip |= 1u << c;
         b.i[c] = b.j[c] = 0;
       }
       if constexpr (Defer) {
         if (((b.skip >> c) & 1u) == 0 &&
-            (lane.earlier.contains(b.i[c]) | lane.earlier.contains(b.j[c]) |
-             lane.held.contains(b.i[c]) | lane.held.contains(b.j[c]))) {
+            (lane.held.contains(b.i[c]) | lane.held.contains(b.j[c]))) {
           b.skip |= 1u << c;
           lane.deferred.push_back(lane.offset + static_cast<std::uint32_t>(q));
           lane.held.insert(b.i[c]);
@@ -111,7 +126,7 @@ std::uint64_t run_lane(State<D, Model, F>& s, Lane& lane, std::uint64_t first,
         for (int d = 0; d < D; ++d) lane.saved.push_back(v[std::size_t(i) * stride + d]);
         for (int d = 0; d < D; ++d) lane.saved.push_back(v[std::size_t(j) * stride + d]);
       }
-      const double s2 = s.collide(i, j, first + at + std::uint64_t(c), hook);
+      const double s2 = s.template collide<Ahead>(i, j, first + at + std::uint64_t(c), hook);
       ++lane.collisions;
       if constexpr (Model::needs_majorant) {
         // later candidates of the batch that share particle i or j: decided again
@@ -132,6 +147,10 @@ std::uint64_t run_lane(State<D, Model, F>& s, Lane& lane, std::uint64_t first,
     }
     generate(batch[std::size_t(cur)], at + 2 * B);
     cur = 1 - cur;
+  }
+  if constexpr (Ahead) {
+    for (std::uint64_t q = count; q < ahead.count; ++q)
+      s.draw_pair(ahead.first + q, ahead.ij[2 * q], ahead.ij[2 * q + 1]);
   }
   return count;
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "hypergas/dsmc/detail/lane.hpp"
+#include "hypergas/dsmc/detail/phase_clock.hpp"
 #include "hypergas/dsmc/detail/self_check.hpp"
 #include "hypergas/dsmc/detail/state.hpp"
 #include "hypergas/thread_team.hpp"
@@ -23,21 +25,40 @@ namespace hypergas::dsmc::detail {
 /// it; without a team the one-thread loop runs).
 class ParallelBlocks {
  public:
-  /// `threads` (1 .. 256, checked by the caller) on n particles; `block` candidates per
-  /// block (0: chosen from n). Below about 20000 particles, and on one thread, no team
-  /// is kept unless a block size is given.
-  void configure(int threads, std::uint32_t block, std::uint32_t n) {
+  /// Velocity arrays below this size (bytes) run on one thread whatever T is: they sit in a
+  /// core's own cache, where a candidate costs too little for the block schedule's
+  /// bookkeeping to pay (measured: docs/benchmarks.md, "One system on T threads"). That is
+  /// 64 000 particles in 3D, 32 000 in 5D and 6D, 128 000 in 2D.
+  static constexpr std::size_t min_parallel_bytes = 2048000;
+  /// Whether n particles of `stride` doubles run on a team.
+  static bool large_enough(std::uint32_t n, int stride) {
+    return std::size_t(n) * std::size_t(stride) * sizeof(double) >= min_parallel_bytes;
+  }
+
+  /// `threads` (1 .. 256, checked by the caller) on n particles of `stride` doubles;
+  /// `block` candidates per block (0: chosen from n). Without a block size, a team is kept
+  /// only for several threads on a large enough gas (large_enough).
+  void configure(int threads, std::uint32_t block, std::uint32_t n, int stride) {
     const std::uint32_t auto_block = std::clamp<std::uint32_t>(n / 64, 2048, 65536);
-    const bool parallel = block > 0 || (threads > 1 && n >= 20000);
+    const bool parallel = block > 0 || (threads > 1 && large_enough(n, stride));
     block_ = parallel ? (block > 0 ? block : auto_block) : 0;
     if (!parallel) {
       team_.reset();
       lanes_.clear();
+      profile_.clear();
+      pairs_ = {};
       return;
     }
     if (!team_ || team_->size() != threads) team_ = std::make_unique<ThreadTeam>(threads);
     lanes_.assign(static_cast<std::size_t>(threads), Lane{});
+    profile_.assign(static_cast<std::size_t>(threads), PhaseTicks{});
   }
+  /// Per thread: the ticks of each phase of the block schedule since configure() or
+  /// reset_profile() (empty without a team).
+  const std::vector<PhaseTicks>& profile() const { return profile_; }
+  void reset_profile() { profile_.assign(profile_.size(), PhaseTicks{}); }
+  /// Candidates per block (0: no team).
+  std::uint32_t block() const { return block_; }
   /// Threads that process one candidate block together (1: the one-thread loop).
   int threads() const { return team_ ? team_->size() : 1; }
   /// Whether an epoch of m candidates runs in blocks (at least four of them).
@@ -48,11 +69,13 @@ class ParallelBlocks {
   ///
   /// Per block b, two phases separated by barriers:
   ///  1. each thread runs its chunk through the batch pipeline (run_lane), deferring the
-  ///     candidates that may depend on an earlier chunk; threads after the first keep the
-  ///     old velocities of what they apply;
+  ///     candidates that may depend on an earlier chunk, and draws the pairs of its chunk
+  ///     of block b + 1 into pairs_; threads after the first keep the old velocities of
+  ///     what they apply;
   ///  2. thread 0 takes the deferred candidates in block order up to the first raise of
   ///     the bound, undoes what later chunks applied after that raise and ends the epoch
-  ///     there; meanwhile every thread draws its chunk of block b + 1 and fills its set.
+  ///     there; meanwhile every other thread fills its set for block b + 1 from the pairs
+  ///     the threads before it drew.
   ///
   /// With a tally (State::tally), thread 0 applies its collisions, the deferred ones and
   /// the undoing to it, the other threads to their lane's delta, and the deltas are merged
@@ -85,77 +108,102 @@ class ParallelBlocks {
     const int T = team.size();
     const double G = s.bound.bound();
     const std::uint64_t K0 = s.candidates;
+    const std::uint64_t blocks = (m + block_ - 1) / block_;
     std::uint64_t done = 0;
     bool stop = false;
     std::vector<double> before;  // self-check: the velocities at the start of the block
     if (s.self_check) save_velocities(s, before);
-    const auto block_after = [&](std::uint64_t start) {
-      return static_cast<std::uint32_t>(std::min<std::uint64_t>(block_, m - start));
+    for (auto& p : pairs_) p.resize(2 * std::size_t(block_));
+    const auto size_of = [&](std::uint64_t b) {
+      return static_cast<std::uint32_t>(std::min<std::uint64_t>(block_, m - b * block_));
     };
-    const auto share = [T](std::uint32_t nb, int t) {
-      return std::pair<std::uint32_t, std::uint32_t>(
-          static_cast<std::uint32_t>(std::uint64_t(nb) * t / T),
-          static_cast<std::uint32_t>(std::uint64_t(nb) * (t + 1) / T));
+    // thread t's chunk of block b: positions [lo, hi), equal shares (docs/benchmarks.md
+    // compares cuts that follow measured busy times)
+    const auto share = [&](std::uint64_t b, int t) {
+      const std::uint64_t nb = size_of(b);
+      return std::pair<std::uint32_t, std::uint32_t>(static_cast<std::uint32_t>(nb * t / T),
+                                                     static_cast<std::uint32_t>(nb * (t + 1) / T));
     };
-    // thread t's set: the particles of the chunks before its own (drawn again here, so that
-    // the set is written and read by one core only)
-    const auto prepare = [&](std::uint64_t start, std::uint32_t nb, int t) {
+    // where thread t draws the pairs of its chunk of block b (the last thread's chunk is
+    // in no set: nothing to draw)
+    const auto ahead_of = [&](std::uint64_t b, int t) {
+      DrawAhead a;
+      if (b >= blocks || t == T - 1) return a;
+      const auto [lo, hi] = share(b, t);
+      a.first = K0 + b * block_ + lo;
+      a.count = hi - lo;
+      a.ij = pairs_[b % 2].data() + 2 * std::size_t(lo);
+      return a;
+    };
+    // thread t's set for block b: the particles of the chunks before its own, read from the
+    // pairs those chunks' threads drew (the set is written and read by one core only)
+    const auto fill_set = [&](std::uint64_t b, int t) {
       Lane& lane = lanes_[std::size_t(t)];
-      const std::uint32_t lo = share(nb, t).first;
-      lane.earlier.reserve(2 * std::size_t(lo));
-      for (std::uint32_t c = 0; c < lo; ++c) {
-        std::uint32_t i, j;
-        s.draw_pair(K0 + start + c, i, j);
-        lane.earlier.insert(i);
-        lane.earlier.insert(j);
-      }
+      const auto [lo, hi] = share(b, t);
+      const std::uint32_t* ij = pairs_[b % 2].data();
+      lane.held.reserve(2 * std::size_t(lo) + (hi - lo) / 8);  // and the deferred ones
+      for (std::uint32_t c = 0; c < 2 * lo; ++c) lane.held.insert(ij[c]);
     };
 
     team.run([&](int t) {
       Lane& lane = lanes_[std::size_t(t)];
+      PhaseTicks& prof = profile_[std::size_t(t)];
+      PhaseClock clock(prof);
       const Hook hook = hook_of(t);
-      std::uint64_t start = 0;
-      std::uint32_t nb = block_after(0);
-      prepare(0, nb, t);
+      {
+        const DrawAhead a = ahead_of(0, t);
+        for (std::uint64_t q = 0; q < a.count; ++q)
+          s.draw_pair(a.first + q, a.ij[2 * q], a.ij[2 * q + 1]);
+      }
+      clock.lap(Phase::draw_set);
       team.sync();
-      for (;;) {
-        const auto [lo, hi] = share(nb, t);
-        // 1. the chunk, deferring what may depend on earlier chunks
+      clock.lap(Phase::wait_tail);
+      fill_set(0, t);
+      clock.lap(Phase::draw_set);
+      for (std::uint64_t b = 0;; ++b) {
+        const std::uint32_t nb = size_of(b);
+        const auto [lo, hi] = share(b, t);
+        // 1. the chunk, deferring what may depend on earlier chunks, and the pairs of the
+        // next block's chunk
         lane.offset = lo;
         lane.deferred.clear();
         lane.saved_at.clear();
         lane.saved_ij.clear();
         lane.saved.clear();
-        lane.held.reserve(std::size_t(hi - lo) / 8);
         lane.collisions = 0;
         lane.raise_s2 = 0.0;
         lane.raised = false;
-        const std::uint64_t first_k = K0 + start + lo;
+        const std::uint64_t first_k = K0 + b * block_ + lo;
+        const DrawAhead ahead = ahead_of(b + 1, t);
         const std::uint64_t ran =
-            t == 0 ? run_lane<Exact, false, false>(s, lane, first_k, hi - lo, G, hook)
-                   : run_lane<Exact, true, Exact && Model::needs_majorant>(s, lane, first_k,
-                                                                          hi - lo, G, hook);
+            t == 0 ? run_lane<Exact, false, false, true>(s, lane, first_k, hi - lo, G, hook, ahead)
+                   : run_lane<Exact, true, Exact && Model::needs_majorant, true>(
+                         s, lane, first_k, hi - lo, G, hook, ahead);
         lane.raise_at = lane.raised ? lo + ran - 1 : nb;
+        ++prof.blocks;
+        prof.candidates += hi - lo;
+        prof.deferred += lane.deferred.size();
+        clock.lap(Phase::chunk);
         team.sync();
-        // 2. the block's end on thread 0; the next block's sets on all
-        const std::uint64_t next = start + nb;
-        const std::uint32_t nn = next < m ? block_after(next) : 0;
+        clock.lap(Phase::wait_chunk);
+        // 2. the block's end on thread 0; the sets of block b + 1 on the others
         if (t == 0) {
           bool raised = false;
           const std::uint32_t processed =
-              finish_block<Exact>(s, K0 + start, nb, G, raised, first);
+              finish_block<Exact>(s, K0 + b * block_, nb, G, raised, first);
           if (s.self_check) [[unlikely]] {
-            check_block<Exact>(s, before, K0 + start, processed, raised, G);
+            check_block<Exact>(s, before, K0 + b * block_, processed, raised, G);
             save_velocities(s, before);
           }
           done += processed;
           stop = raised;
+          clock.lap(Phase::tail);
         }
-        if (nn > 0) prepare(next, nn, t);
+        if (b + 1 < blocks) fill_set(b + 1, t);
+        clock.lap(Phase::draw_set);
         team.sync();
-        if (stop || nn == 0) return;  // the same decision on every thread
-        start = next;
-        nb = nn;
+        clock.lap(Phase::wait_tail);
+        if (stop || b + 1 == blocks) return;  // the same decision on every thread
       }
     });
     return done;
@@ -236,7 +284,9 @@ class ParallelBlocks {
 
   std::uint32_t block_ = 0;
   std::unique_ptr<ThreadTeam> team_;
+  std::array<std::vector<std::uint32_t>, 2> pairs_;  // blocks b and b + 1 (b mod 2): pairs drawn ahead
   std::vector<Lane> lanes_;
+  std::vector<PhaseTicks> profile_;  // per thread, written by that thread only
 };
 
 }  // namespace hypergas::dsmc::detail

@@ -96,9 +96,14 @@ struct State {
       return true;
     }
   }
+  [[gnu::noinline]] static Vec<D> deflect_outlined(const Vec<D>& g, double gn, EventStream& rng) {
+    return Model::template deflect<D>(g, gn, rng);
+  }
   /// Collides pair (i, j) as candidate K (its scattering words from word 2 of K on) and
-  /// reports it to `hook`; returns the larger of the two new squared speeds.
-  template <class Hook = NoHook>
+  /// reports it to `hook`; returns the larger of the two new squared speeds. Outlined: the
+  /// scattering is called, not inlined (the thread lanes run faster so: docs/benchmarks.md,
+  /// "Kept designs"); the result is the same.
+  template <bool Outlined = false, class Hook = NoHook>
   [[gnu::always_inline]] double collide(std::uint32_t i, std::uint32_t j, std::uint64_t K,
                                         const Hook& hook = Hook{}) {
     using Map = Eigen::Map<Vec<D>>;
@@ -107,7 +112,9 @@ struct State {
     EventStream rng_k = draws.scattering(K);
     const Vec<D> g = vi - vj;
     const double gn = std::sqrt(g.squaredNorm());
-    const Vec<D> delta = Model::template deflect<D>(g, gn, rng_k) - g;
+    Vec<D> delta;
+    if constexpr (Outlined) delta = deflect_outlined(g, gn, rng_k) - g;
+    else delta = Model::template deflect<D>(g, gn, rng_k) - g;
     if constexpr (Hook::active) {
       const Vec<D> oi = vi, oj = vj;
       apply_deflection<D>(p, i, j, vi, vj, delta);

@@ -9,9 +9,10 @@
 // components, store) over an array of the same size, with the same prefetching as the
 // engine. With a list of thread counts each point is timed for every count (alternating
 // within each repeat) and each line adds the speed-up over the first count, the parallel
-// efficiency and probe_gain: the aggregate rate of that many probes run at the same time on
-// separate arrays over the rate of one, the most any parallel schedule could gain on the
-// machine. Rates are per wall second; with `cpu_clock`, per CPU second of the thread for
+// efficiency, the ceiling (that many independent one-thread engines started together, each
+// on its own gas: their summed rate over one engine alone, what the machine allows any
+// schedule of one system) and the speed-up over the ceiling, and the block schedule's
+// per-thread phase ticks (dsmc/detail/phase_clock.hpp). Rates are per wall second; with `cpu_clock`, per CPU second of the thread for
 // paired A/B runs of one thread on a shared machine. The JSON says which ("clock").
 //
 // EDMD: one case is a dimension, N, packing fraction and neighbour scan:
@@ -52,8 +53,10 @@ struct DsmcBenchOptions {
 /// `out`. Fields: model, dim, n, reps, collisions_per_s (median accepted collisions per
 /// second), candidates_per_s, acceptance, bytes_per_particle, probe_pair_updates_per_s,
 /// probe_ratio (one core), threads, speedup (against the first thread count, scaled by
-/// it), efficiency (speedup / threads), probe_gain (aggregate rate of `threads` probes run
-/// at once over one: the machine's ceiling for the speed-up), clock. Throws InvalidInput for an unknown model, a
+/// it), efficiency (speedup / threads), ceiling (summed rate of `threads` one-thread engines
+/// run at once over one alone), of_ceiling (speedup / ceiling), ticks_per_s (the phase
+/// clock's rate), clock, and with a team "schedule": per thread, the ticks of each phase per
+/// candidate of the system and the fraction of its candidates it deferred. Throws InvalidInput for an unknown model, a
 /// dimension outside 1..6 or a thread count outside 1..256.
 void run_dsmc_bench(std::ostream& out, const DsmcBenchOptions& o = {});
 

@@ -12,6 +12,7 @@
 
 #include "hypergas/analysis/moments_recorder.hpp"
 #include "hypergas/analysis/output.hpp"
+#include "hypergas/analysis/transport_recorder.hpp"
 #include "hypergas/analysis/vacf_recorder.hpp"
 #include "hypergas/conserved.hpp"
 #include "options.hpp"
@@ -23,6 +24,8 @@ namespace hypergas::cli {
 struct RunRecord {
   analysis::MomentsRecorder moments;              ///< one row per sampling time
   std::unique_ptr<analysis::VacfRecorder> vacf;   ///< EDMD only (nullptr for DSMC)
+  /// DSMC with --transport: the Green-Kubo coefficients, finished (else nullptr)
+  std::unique_ptr<analysis::TransportRecorder> transport;
   analysis::JsonObject summary;  ///< summary.json: the contract's keys first, then extras
 };
 

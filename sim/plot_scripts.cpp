@@ -9,8 +9,9 @@
 
 namespace hypergas::cli {
 
-std::string run_plot_script(bool vacf) {
-  return fmt::format("vacf = {}\n", vacf ? 1 : 0) + std::string(embedded::plot_run_gp);
+std::string run_plot_script(bool vacf, bool transport) {
+  return fmt::format("vacf = {}\ntransport = {}\n", vacf ? 1 : 0, transport ? 1 : 0) +
+         std::string(embedded::plot_run_gp);
 }
 
 std::string scene_plot_script(const std::vector<int>& dims, double threshold) {

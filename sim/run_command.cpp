@@ -34,7 +34,12 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume) {
   rec.moments.write_moments_csv(out.staged("moments.csv").string());
   rec.moments.write_speed_histogram_csv(out.staged("speed_histogram.csv").string());
   if (rec.vacf && rec.vacf->frames() >= 2) rec.vacf->write_csv(out.staged("vacf.csv").string());
-  studies::run_gnuplot(run_plot_script(rec.vacf && rec.vacf->frames() >= 2), out.staging());
+  if (rec.transport) {
+    rec.transport->write_transport_csv(out.staged("transport.csv").string());
+    rec.transport->write_correlations_csv(out.staged("correlations.csv").string());
+  }
+  studies::run_gnuplot(run_plot_script(rec.vacf && rec.vacf->frames() >= 2, bool(rec.transport)),
+                       out.staging());
   rec.summary.emplace_back(
       "output_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   const analysis::JsonObject& summary = rec.summary;
@@ -53,6 +58,10 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume) {
   fmt::print("  final kurtosis_x {} (MB 3), KS p-value of speeds {}, energy drift {}, "
              "momentum drift {}\n",
              f("kurtosis_x"), f("ks_p_speed"), f("energy_rel_drift"), f("momentum_drift"));
+  if (rec.transport)
+    for (const auto& c : rec.transport->finish())
+      fmt::print("  {} {:.5g} +- {:.2g} (reduced), first Sonine {:.5g}, ratio {:.5f} +- {:.5f}\n",
+                 c.name, c.value, c.error, c.sonine, c.ratio, c.ratio_error);
   if (edmd)
     fmt::print("  packing {}, Z = PV/NkT {}, collision rate {}, mean free time {}\n",
                f("packing"), f("Z"), f("collision_rate"), f("mean_free_time"));

@@ -14,9 +14,17 @@ std::optional<Stop> RunPlan::stop(std::uint64_t k) const {
   const double t0 = sampling.t0();
   if (k + 1 < w) return Stop{t0 * static_cast<double>(k + 1) / warmup_stops, false, false};
   if (k + 1 == w) return Stop{t0, true, true};
+  if (w == 0 && substeps > 1) {
+    const std::uint64_t m = k / substeps, j = k % substeps;
+    if (m > sampling.intervals() || (m == sampling.intervals() && j > 0)) return std::nullopt;
+    if (j == 0) return Stop{sampling.time(m), false, true, true};
+    const double a = sampling.time(m), b = sampling.time(m + 1);
+    return Stop{a + (b - a) * static_cast<double>(j) / static_cast<double>(substeps), false,
+                false, true};
+  }
   const std::uint64_t m = w > 0 ? k - w + 1 : k;
   if (m > sampling.intervals()) return std::nullopt;
-  return Stop{sampling.time(m), false, true};
+  return Stop{sampling.time(m), false, true, w == 0};
 }
 
 Checkpointer::Checkpointer(std::filesystem::path dir, double every, double wall_s)

@@ -36,12 +36,16 @@ struct Stop {
   double time = 0.0;
   bool start_window = false;
   bool sample = false;
+  bool fine = false;  ///< a stop of the fine grid (DSMC with substeps, --transport)
 };
 
 /// The stops of a run (see the file comment).
 struct RunPlan {
   Schedule sampling;         ///< the sampled instants, sampling.t0() .. sampling.until()
   int warmup_stops = 0;      ///< EDMD: equilibration stops (the last one samples), DSMC: 0
+  /// DSMC: fine stops per sampling interval (evenly spaced; the first is the sampling
+  /// instant): the grid of --transport. 1: the sampling instants only.
+  std::uint64_t substeps = 1;
 
   /// Stop k, or nothing after the last one.
   std::optional<Stop> stop(std::uint64_t k) const;
@@ -104,9 +108,10 @@ struct InterruptedWithCheckpoint {
 /// after each stop writes a checkpoint through ck when due (save(writer) writes it, with
 /// `st` already updated). Ends with the engine at plan.until. Throws
 /// InterruptedWithCheckpoint (checkpointing on) or Interrupted (off) after SIGINT/SIGTERM.
+/// `fine`, if set, observes at every stop of the fine grid (RunPlan::substeps).
 template <class Engine, class Save>
 void drive(Engine& engine, const RunPlan& plan, DriverState& st, Observer& obs,
-           Checkpointer& ck, Save&& save) {
+           Checkpointer& ck, Save&& save, Observer* fine = nullptr) {
   using Clock = std::chrono::steady_clock;
   for (;;) {
     const std::optional<Stop> s = plan.stop(st.next_stop);
@@ -116,6 +121,7 @@ void drive(Engine& engine, const RunPlan& plan, DriverState& st, Observer& obs,
     if constexpr (requires { engine.reset_observables(); })
       if (s->start_window) engine.reset_observables();
     const auto t1 = Clock::now();
+    if (s->fine && fine) engine.observe(*fine);
     if (s->sample) engine.observe(obs);
     const auto t2 = Clock::now();
     st.engine_s += std::chrono::duration<double>(t1 - t0).count();

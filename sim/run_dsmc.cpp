@@ -57,6 +57,31 @@ double summary_number(const analysis::JsonObject& o, const std::string& key) {
 
 namespace {
 
+/// --transport: the fine grid of the plan (substeps of about --correlation-dt) and the
+/// recorder, with the samples it will take (the fine stops from transport_warmup on).
+template <int D>
+std::unique_ptr<analysis::TransportRecorder> transport_recorder(const RunOptions& o,
+                                                                RunPlan& plan) {
+  const double every = plan.sampling.every();
+  plan.substeps = std::max<std::uint64_t>(
+      1, static_cast<std::uint64_t>(std::llround(every / o.correlation_dt)));
+  const double dt = every / static_cast<double>(plan.substeps);
+  std::uint64_t frames = 0;
+  for (std::uint64_t k = 0;; ++k) {
+    const std::optional<Stop> s = plan.stop(k);
+    if (!s) break;
+    frames += s->time >= options::transport_warmup - 1e-9 * options::transport_warmup;
+  }
+  analysis::TransportSettings ts;
+  ts.dt = dt;
+  ts.max_lag = o.correlation_time;
+  ts.tagged = o.tagged;
+  ts.warmup = options::transport_warmup;
+  ts.seed = o.seed;
+  return std::make_unique<analysis::TransportRecorder>(ts, D, static_cast<std::size_t>(o.n),
+                                                       frames, o.model, o.vhs_exponent);
+}
+
 /// Runs one system on o.threads threads (checkpoints and resume through ctx) or `replicas`
 /// independent replicas (studies/replicas.hpp: replica 0 keeps the seed, so its files equal
 /// those of a one-replica run; the replicas run side by side, one per thread, with
@@ -69,9 +94,11 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
   static_assert(SimulationEngine<Engine>);
   using Clock = std::chrono::steady_clock;
   const double until = o.until;
-  const RunPlan plan{.sampling = o.schedule(0.0), .warmup_stops = 0};
+  RunPlan plan{.sampling = o.schedule(0.0), .warmup_stops = 0};
   const double every = plan.sampling.every();
   const int k = o.replicas;
+  std::unique_ptr<analysis::TransportRecorder> transport;
+  if (o.transport) transport = transport_recorder<D>(o, plan);
 
   std::vector<RunRecord> recs(static_cast<std::size_t>(k));
   std::vector<double> engine_s(k), rate(k), drift_e(k), drift_p(k), cpp(k);
@@ -87,7 +114,7 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
     const auto save = [&](checkpoint::Writer& w) {
       save_run(w, o, st, c0, engine, recs[r].moments);
     };
-    drive(engine, plan, st, obs, ck, save);
+    drive(engine, plan, st, obs, ck, save, r == 0 ? transport.get() : nullptr);
     const auto c1 = conserved(engine.particles());
     engine_s[r] = st.engine_s;
     coll[r] = static_cast<std::int64_t>(engine.collisions());
@@ -111,6 +138,11 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
 
   RunRecord rec = std::move(recs[0]);
+  if (transport) {
+    const auto ta = Clock::now();
+    transport->finish();
+    st0.analysis_s += std::chrono::duration<double>(Clock::now() - ta).count();
+  }
   std::int64_t total = 0;
   double total_rate = 0.0;
   std::vector<double> kurt;
@@ -154,6 +186,17 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
       {"checkpoints", static_cast<std::int64_t>(st0.checkpoints)},
       {"resumes", static_cast<std::int64_t>(st0.resumes)},
   };
+  if (transport) {
+    rec.summary.emplace_back("transport_dt", transport->dt());
+    rec.summary.emplace_back("transport_samples", static_cast<std::int64_t>(transport->frames()));
+    for (const auto& c : transport->finish()) {
+      rec.summary.emplace_back(c.name, c.value);
+      rec.summary.emplace_back(c.name + "_error", c.error);
+      rec.summary.emplace_back(c.name + "_ratio", c.ratio);
+      rec.summary.emplace_back(c.name + "_ratio_error", c.ratio_error);
+    }
+    rec.transport = std::move(transport);
+  }
   return rec;
 }
 

@@ -301,18 +301,25 @@ void MomentsRecorder::observe(const Snapshot& s) {
     throw InvalidInput("MomentsRecorder: at most " + std::to_string(max_species) + " species");
   // the engine's tally if it fits the layout, else one pass with the layout, else
   // configure from this snapshot and pass
+  // whether the engine's tally pays for itself (tally_limit): by the last interval's count
+  const bool keep = !have_last_ || static_cast<double>(s.collisions - last_collisions_) <=
+                                       tally_limit * static_cast<double>(s.n);
+  last_collisions_ = s.collisions;
+  have_last_ = true;
   const tally::Tally* kept = s.tally && s.tally->tally ? s.tally->tally.get() : nullptr;
   const bool fits = cfg_.set && cfg_.layout.dim == s.dim && cfg_.layout.n_species == ns &&
                     cfg_.layout.weighted == (s.species != nullptr || s.inv_mass != nullptr) &&
                     s.inv_mass == nullptr && same_masses(s, cfg_.layout);
   if (fits && kept && kept->layout() == cfg_.layout &&
-      kept->count(-1) == static_cast<std::int64_t>(s.n) && record(s, *kept))
+      kept->count(-1) == static_cast<std::int64_t>(s.n) && record(s, *kept)) {
+    if (!keep) s.tally->tally.reset();
     return;
+  }
   if (fits) {
     tally::Tally t = pass(s);
     ++passes_;
     if (record(s, t)) {
-      if (s.tally) s.tally->tally = std::make_unique<tally::Tally>(std::move(t));
+      if (s.tally) s.tally->tally = keep ? std::make_unique<tally::Tally>(std::move(t)) : nullptr;
       return;
     }
   }
@@ -321,7 +328,7 @@ void MomentsRecorder::observe(const Snapshot& s) {
   ++passes_;
   if (!record(s, t))
     throw InvalidInput("MomentsRecorder: the snapshot's temperature is not reproducible");
-  if (s.tally) s.tally->tally = std::make_unique<tally::Tally>(std::move(t));
+  if (s.tally) s.tally->tally = keep ? std::make_unique<tally::Tally>(std::move(t)) : nullptr;
 }
 
 bool MomentsRecorder::record(const Snapshot& s, const tally::Tally& t) {

@@ -10,6 +10,7 @@
 #include <mutex>
 #include <string>
 
+#include "fftw_planner.hpp"
 #include "hypergas/error.hpp"
 
 namespace hypergas::analysis {
@@ -77,10 +78,7 @@ class Correlator {
   std::unique_ptr<double, FftwFree> in_;
   std::unique_ptr<fftw_complex, FftwFree> out_;
   fftw_plan forward_ = nullptr, backward_ = nullptr;
-  static std::mutex& planner_mutex() {
-    static std::mutex m;
-    return m;
-  }
+  static std::mutex& planner_mutex() { return detail::fftw_planner_mutex(); }
 };
 
 // Channel c = i * dim + k of the series, gathered into a contiguous array.

@@ -140,6 +140,41 @@ registry::EngineKind RunOptions::engine_kind() const { return registry::engine(e
 
 InitialState RunOptions::initial_state() const { return registry::initial_state(init); }
 
+namespace {
+/// --transport and its options (analysis/transport_recorder.hpp).
+void validate_transport(const RunOptions& o) {
+  if (!o.transport) {
+    for (const char* k : {"--correlation-dt", "--correlation-time", "--tagged"})
+      if (o.was_given(k)) bad(fmt::format("{} applies with --transport only", k));
+    return;
+  }
+  if (o.dim < 2)
+    bad("--transport needs --dim >= 2: in D = 1 equal masses only swap velocities, so no "
+        "flux relaxes");
+  if (two_species(o)) bad("--transport measures a one-species gas: leave out --mass-ratio");
+  if (o.n < 100)
+    bad(fmt::format("--transport needs --n >= 100 (its 1/N corrections grow below), got {}",
+                    o.n));
+  if (o.replicas != 1) bad("--transport needs --replicas 1");
+  if (o.checkpoint_every > 0.0 || !o.checkpoint_wall.empty())
+    bad("--transport runs cannot be checkpointed: leave out --checkpoint-every and "
+        "--checkpoint-wall");
+  if (o.correlation_time < 4.0 * o.correlation_dt)
+    bad(fmt::format("--correlation-time {} must be at least 4 --correlation-dt ({})",
+                    o.correlation_time, o.correlation_dt));
+  const double span = o.until - transport_warmup;
+  if (span < 10.0 * o.correlation_time)
+    bad(fmt::format("--transport samples from t = {} on and needs --until >= {} + 10 "
+                    "--correlation-time = {} (ten correlation windows), got {}",
+                    transport_warmup, transport_warmup,
+                    transport_warmup + 10.0 * o.correlation_time, o.until));
+  if (span / o.correlation_dt > 1e9)
+    bad(fmt::format("--transport: (--until - {}) / --correlation-dt = {:.3g} samples; at most "
+                    "1e9",
+                    transport_warmup, span / o.correlation_dt));
+}
+}  // namespace
+
 void validate(const RunOptions& o) {
   const registry::EngineKind e = o.engine_kind();
   const bool edmd = e == registry::EngineKind::edmd;
@@ -160,6 +195,7 @@ void validate(const RunOptions& o) {
   }
   if ((o.checkpoint_every > 0.0 || !o.checkpoint_wall.empty()) && o.replicas != 1)
     bad("--checkpoint-every and --checkpoint-wall need --replicas 1 (one system)");
+  validate_transport(o);
   if (edmd) {
     const double jam = jamming_packing(o.dim);
     if (o.packing >= jam)

@@ -41,6 +41,23 @@ observers=[rec])``) with multiple-tau correlators: memory independent of the run
 """
 
 
+TransportRecorder = _hypergas.TransportRecorder
+TransportRecorder.__doc__ = """Green-Kubo viscosity, thermal conductivity and self-diffusion (DSMC).
+
+TransportRecorder(dim, n, until, dt=0.05, max_lag=40, tagged=32, warmup=20, model="hs",
+vhs_exponent=1, seed=1) is what ``hypergas run --transport`` uses: give it to a one-species
+``DSMC`` of the same dim, n and model, observed every dt up to until (at most 1e6 samples a
+``run`` call, so run in stretches: ``for t in range(1000, until + 1, 1000):
+gas.run(t, every=dt, observers=[rec])``). From t = warmup on the engine keeps the
+collective stress and heat flux exactly, collision by collision. ``finish()`` returns
+{name: {value, error, first_sonine, ratio, ratio_error, t_cut, tail, c0, decay_rate, ...}}
+for viscosity, thermal_conductivity, self_diffusion and self_diffusion_einstein, reduced by
+n kT tau, n k_B (kT/m) tau and (kT/m) tau (docs/validation.md); ``normalised(g)`` the
+correlation C(t)/C(0) of group g (0, 1, 2) on the grid t = k dt; ``write_transport_csv``,
+``write_correlations_csv``: the command's files.
+"""
+
+
 @dataclasses.dataclass(frozen=True)
 class SpeedHistogram:
     """Speed histogram against the D-dimensional Maxwell-Boltzmann density at kT.

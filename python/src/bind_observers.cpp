@@ -1,10 +1,12 @@
 // python/src/bind_observers.cpp -- the command's recorders as Python observers: Observer,
-// MomentsRecorder (the rows of moments.csv, histograms) and VacfRecorder.
+// MomentsRecorder (the rows of moments.csv, histograms), VacfRecorder and TransportRecorder
+// (Green-Kubo coefficients, transport.csv).
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -15,6 +17,7 @@
 #include "hypergas/analysis/histogram.hpp"
 #include "hypergas/analysis/maxwell.hpp"
 #include "hypergas/analysis/moments_recorder.hpp"
+#include "hypergas/analysis/transport_recorder.hpp"
 #include "hypergas/analysis/vacf_recorder.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/options/run_options.hpp"
@@ -119,6 +122,64 @@ void bind_observers(py::module_& m) {
       .def("green_kubo", &analysis::VacfRecorder::green_kubo, py::arg("max_lag") = 0)
       .def("write_csv", &analysis::VacfRecorder::write_csv, py::arg("path"),
            py::arg("max_lag") = 0);
+
+  py::class_<analysis::TransportRecorder, Observer>(m, "TransportRecorder")
+      .def(py::init([](const py::object& dim, const py::object& n, double until, double dt,
+                       double max_lag, const py::object& tagged, double warmup,
+                       const std::string& model, double vhs_exponent, const py::object& seed) {
+             const long long d = as_integer("dim", dim), nn = as_integer("n", n);
+             const long long t = as_integer("tagged", tagged);
+             options::check_dim(static_cast<int>(d), "dim");
+             options::check_n(nn, "n");
+             if (!(std::isfinite(until) && std::isfinite(dt) && dt > 0.0 && dt <= 1.0))
+               throw InvalidInput("dt must be finite, > 0 and at most 1; until finite");
+             if (!(std::isfinite(warmup) && warmup >= 0.0))
+               throw InvalidInput("warmup must be finite and >= 0");
+             if (!(std::isfinite(max_lag) && max_lag >= 4.0 * dt && max_lag <= 1e4))
+               throw InvalidInput("max_lag must be at least 4 dt and at most 1e4");
+             if (t < 1 || t > 4096) throw InvalidInput("tagged must be in 1..4096");
+             if (!(until - warmup >= 10.0 * max_lag))
+               throw InvalidInput("until must be at least warmup + 10 max_lag (ten correlation "
+                                  "windows)");
+             analysis::TransportSettings ts;
+             ts.dt = dt, ts.max_lag = max_lag, ts.tagged = static_cast<int>(t);
+             ts.warmup = warmup, ts.seed = as_seed(seed);
+             const auto frames =
+                 static_cast<std::uint64_t>(std::llround((until - warmup) / dt)) + 1;
+             return std::make_unique<analysis::TransportRecorder>(
+                 ts, static_cast<int>(d), static_cast<std::size_t>(nn), frames, model,
+                 model == "maxwell" ? 0.0 : model == "hs" ? 1.0 : vhs_exponent);
+           }),
+           py::arg("dim"), py::arg("n"), py::arg("until"), py::arg("dt") = 0.05,
+           py::arg("max_lag") = 40.0, py::arg("tagged") = 32, py::arg("warmup") = 20.0,
+           py::arg("model") = "hs", py::arg("vhs_exponent") = 1.0, py::arg("seed") = 1)
+      .def_property_readonly("frames", &analysis::TransportRecorder::frames)
+      .def_property_readonly("dt", &analysis::TransportRecorder::dt)
+      .def_property_readonly("kT", &analysis::TransportRecorder::kT)
+      .def("finish",
+           [](analysis::TransportRecorder& r) {
+             py::dict out;
+             for (const auto& c : r.finish()) {
+               py::dict d;
+               d["value"] = c.value, d["error"] = c.error, d["first_sonine"] = c.sonine;
+               d["ratio"] = c.ratio, d["ratio_error"] = c.ratio_error, d["t_cut"] = c.t_cut;
+               d["tail"] = c.tail, d["c0"] = c.c0, d["decay_rate"] = c.rate;
+               d["decay_rate_error"] = c.rate_error, d["first_sonine_rate"] = c.sonine_rate;
+               d["stretches"] = to_numpy(c.stretches);
+               out[py::str(c.name)] = d;
+             }
+             return out;
+           })
+      .def("normalised",
+           [](const analysis::TransportRecorder& r, int g) {
+             if (g < 0 || g > 2) throw InvalidInput("normalised: group must be 0, 1 or 2");
+             return to_numpy(r.normalised(g));
+           },
+           py::arg("group"))
+      .def("write_transport_csv", &analysis::TransportRecorder::write_transport_csv,
+           py::arg("path"))
+      .def("write_correlations_csv", &analysis::TransportRecorder::write_correlations_csv,
+           py::arg("path"));
 }
 
 }  // namespace hypergas::python

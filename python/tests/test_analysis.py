@@ -111,3 +111,37 @@ def test_report_quick():
     for s, se in zip(r.slopes["slope"][stat], r.slopes["slope_se"][stat]):
         assert abs(s + 0.5) < 5 * se + 0.15
     assert len(r.points["error"]) > 0 and np.all(r.points["error"] > 0)
+
+
+def test_transport_recorder_maxwell_molecules_exact_rates():
+    # Maxwell molecules in 3D: the stress and tagged-velocity correlations decay exactly at
+    # N/(2(N-1)), the heat flux at (D-1)/(2D) N/(N-1) (docs/validation.md); 4 standard
+    # errors from 32 stretches (false failure about 3e-4 each, Student t, 31 dof)
+    n, until = 400, 3020.0
+    gas = hg.DSMC(dim=3, n=n, model="maxwell", init="maxwell", seed=5)
+    rec = hg.TransportRecorder(3, n, until, max_lag=20.0, tagged=16, model="maxwell")
+    for t in (1020.0, 2020.0, until):
+        gas.run(t, every=0.05, observers=[rec])
+    r = rec.finish()
+    f = n / (n - 1.0)
+    exact = {"viscosity": 0.5 * f, "thermal_conductivity": f / 3.0, "self_diffusion": 0.5 * f}
+    for name, rate in exact.items():
+        c = r[name]
+        assert abs(c["decay_rate"] - rate) < 4 * c["decay_rate_error"], (name, c)
+        assert abs(c["value"] - c["c0"] / rate) < 4 * c["error"], (name, c)
+    assert rec.normalised(0)[0] == 1.0
+    assert r["self_diffusion_einstein"]["value"] == pytest.approx(r["self_diffusion"]["value"],
+                                                                 rel=0.01)
+
+
+def test_transport_recorder_bad_input():
+    with pytest.raises(ValueError):
+        hg.TransportRecorder(1, 100, 1000.0)
+    with pytest.raises(ValueError):
+        hg.TransportRecorder(3, 100, 100.0)  # shorter than ten correlation windows
+    with pytest.raises(ValueError):
+        hg.TransportRecorder(3, 100, 1000.0, model="soft")
+    gas = hg.DSMC(dim=3, n=200, mass_ratio=2.0, seed=1)
+    rec = hg.TransportRecorder(3, 200, 1000.0, warmup=0.0)
+    with pytest.raises(ValueError):
+        gas.run(1.0, every=0.05, observers=[rec])

@@ -164,4 +164,26 @@ TEST_CASE("bench and the default scene reject bad input too", "[cli]") {
   CHECK(r.code == 2);
   CHECK(s.entries() == 0);
 }
+
+TEST_CASE("run --transport: what it cannot measure is rejected", "[cli]") {
+  const std::vector<std::string> ok{"run", "--transport", "--until", "500"};
+  const auto with = [&](std::vector<std::string> extra) {
+    auto a = ok;
+    a.insert(a.end(), extra.begin(), extra.end());
+    return a;
+  };
+  expect_rejected(with({"--dim", "1"}), "--transport needs --dim >= 2");
+  expect_rejected(with({"--mass-ratio", "2"}), "one-species gas");
+  expect_rejected(with({"--n", "50"}), "--transport needs --n >= 100");
+  expect_rejected(with({"--replicas", "2"}), "--transport needs --replicas 1");
+  expect_rejected(with({"--checkpoint-every", "10"}), "cannot be checkpointed");
+  expect_rejected({"run", "--transport", "--until", "100"},
+                  "needs --until >= 20 + 10 --correlation-time = 420");
+  expect_rejected(with({"--correlation-time", "0.1"}), "at least 4 --correlation-dt");
+  expect_rejected(with({"--correlation-dt", "0"}), "--correlation-dt must be");
+  expect_rejected(with({"--tagged", "0"}), "--tagged must be in 1..4096");
+  expect_rejected({"run", "--tagged", "8"}, "--tagged applies with --transport only");
+  expect_rejected({"run", "--engine", "edmd", "--transport"},
+                  "--transport applies to --engine dsmc only");
+}
 #endif

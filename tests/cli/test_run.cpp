@@ -176,4 +176,31 @@ TEST_CASE("run --threads T writes the same files for T = 1, 2, 3", "[cli]") {
       CHECK(cli_test::slurp(s.path() / "1" / f) == cli_test::slurp(s.path() / t / f));
     }
 }
+
+TEST_CASE("run --transport writes transport.csv, correlations.csv and transport.png", "[cli]") {
+  Scratch s("transport");
+  const auto out = s.path() / "out";
+  const auto r = cli_test::run({"run", "--engine", "dsmc", "--dim", "2", "--model", "maxwell",
+                                "--n", "200", "--until", "420", "--transport", "--seed", "3",
+                                "--out", out.string(), "--json"},
+                               s.path());
+  INFO("stderr: " << r.err << "\nstdout: " << r.out);
+  REQUIRE(r.code == 0);
+  CHECK(header(out / "transport.csv") ==
+        "coefficient,value,error,first_sonine,ratio,ratio_error,t_cut,tail,c0,decay_rate,"
+        "decay_rate_error,first_sonine_rate");
+  const auto rows = cli_test::lines(cli_test::slurp(out / "transport.csv"));
+  REQUIRE(rows.size() == 5);
+  CHECK(starts_with(rows[1], "viscosity,"));
+  CHECK(starts_with(rows[2], "thermal_conductivity,"));
+  CHECK(starts_with(rows[3], "self_diffusion,"));
+  CHECK(starts_with(rows[4], "self_diffusion_einstein,"));
+  CHECK(starts_with(header(out / "correlations.csv"), "time,viscosity,viscosity_sonine,"));
+  // lags 0 .. 40 in steps of the sampling interval (0.05, rounded to a multiple of 16 lags)
+  CHECK(cli_test::lines(cli_test::slurp(out / "correlations.csv")).size() == 1 + 816);
+  CHECK(cli_test::fs::exists(out / "transport.png"));
+  check_summary_keys(cli_test::slurp(out / "summary.json"),
+                     {"viscosity", "viscosity_error", "viscosity_ratio", "thermal_conductivity",
+                      "self_diffusion_ratio_error", "transport_samples"});
+}
 #endif

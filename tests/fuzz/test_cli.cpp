@@ -344,7 +344,8 @@ const std::set<std::string> run_names{
     "--engine", "--dim", "-d", "--n", "-n", "--out", "-o", "--json", "--model",
     "--vhs-exponent", "--init", "--until", "--every", "--packing", "--mass-ratio", "--fraction",
     "--temperature", "--seed", "--threads", "-j", "--replicas", "--checkpoint-every",
-    "--checkpoint-wall", "--help", "-h"};
+    "--checkpoint-wall", "--transport", "--correlation-dt", "--correlation-time", "--tagged",
+    "--help", "-h"};
 const std::set<std::string> bench_names{"--engine", "--dim", "-d", "--n", "-n", "--model",
                                         "--packing", "--reps", "--min-collisions", "--threads",
                                         "-j", "--seed", "--help", "-h"};

@@ -47,17 +47,19 @@ TEST_CASE("ExactSum: the sum of rounded terms, whatever the order", "[tally]") {
 
 namespace {
 
+/// Hands snapshots to a recorder without the engine's tally slot: it makes its own pass.
+struct Strip final : Observer {
+  analysis::MomentsRecorder* to = nullptr;
+  void observe(const Snapshot& s) override {
+    Snapshot c = s;
+    c.tally = nullptr;
+    to->observe(c);
+  }
+};
+
 template <class Engine>
 analysis::MomentsRecorder observe_fresh(Engine& e, analysis::MomentsRecorder rec) {
-  // the same snapshot without the engine's tally slot: the recorder makes its own pass
-  struct Strip final : Observer {
-    analysis::MomentsRecorder* to;
-    void observe(const Snapshot& s) override {
-      Snapshot c = s;
-      c.tally = nullptr;
-      to->observe(c);
-    }
-  } strip;
+  Strip strip;
   strip.to = &rec;
   e.observe(strip);
   return rec;
@@ -200,4 +202,37 @@ TEST_CASE("Binned KS: between the exact statistic and it minus a bin's probabili
     REQUIRE(binned.statistic >= exact.statistic - pmax - 1e-15);
     REQUIRE(binned.p_value >= exact.p_value);
   }
+}
+
+TEST_CASE("Tally: dropped where rows are sparse, with the same rows", "[tally]") {
+  // rows 5 time units apart hold 2.5 n collisions, above tally_limit * n: after the second
+  // row the recorder takes the tally out of the engine and makes each row by a pass
+  dsmc::Config cfg;
+  cfg.n = 4000;
+  cfg.seed = 21;
+  cfg.init = InitialState::beams;
+  dsmc::Engine<3, dsmc::HardSpheres> a(cfg), b(cfg);
+  analysis::MomentsRecorder ra, rb;
+  Strip strip;
+  strip.to = &rb;
+  struct Probe final : Observer {
+    analysis::MomentsRecorder* to;
+    std::vector<bool> kept;
+    void observe(const Snapshot& s) override {
+      to->observe(s);
+      kept.push_back(s.tally->tally != nullptr);
+    }
+  } probe;
+  probe.to = &ra;
+  a.run_until(20.0, &probe, 5.0);
+  b.run_until(20.0, &strip, 5.0);
+  REQUIRE(probe.kept == std::vector<bool>{true, false, false, false, false});
+  REQUIRE(ra.rows() == rb.rows());
+  // dense rows keep it
+  dsmc::Engine<3, dsmc::HardSpheres> c(cfg);
+  analysis::MomentsRecorder rc;
+  probe.to = &rc;
+  probe.kept.clear();
+  c.run_until(1.0, &probe, 0.25);
+  REQUIRE(probe.kept == std::vector<bool>(5, true));
 }

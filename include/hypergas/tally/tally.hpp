@@ -45,6 +45,7 @@
 #include "hypergas/observer.hpp"
 #include "hypergas/particles.hpp"
 #include "hypergas/tally/exact_sum.hpp"
+#include "hypergas/tally/fluxes.hpp"
 
 namespace hypergas::tally {
 
@@ -433,11 +434,13 @@ inline void Tally::fold() const {
   }
 }
 
-/// Where an engine keeps the tally an analysis asked for (Snapshot::tally): the analysis
-/// installs one built from the snapshot's velocities, and the engine applies every later
-/// collision to it until it is replaced or dropped.
+/// Where an engine keeps what an analysis asked it to keep per collision (Snapshot::tally):
+/// the analysis installs a tally (moments, histograms) and/or collective fluxes (transport,
+/// fluxes.hpp) built from the snapshot's velocities, and the engine applies every later
+/// collision to them until they are replaced or dropped.
 struct Slot {
   std::unique_ptr<Tally> tally;
+  std::unique_ptr<Fluxes> fluxes;
 };
 
 }  // namespace hypergas::tally

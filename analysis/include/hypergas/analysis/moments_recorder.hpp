@@ -111,7 +111,13 @@ class MomentsRecorder final : public Observer {
   std::size_t ks_cap() const { return ks_cap_; }
   /// Rows that read every particle (configuring, or an engine without a tally); the other
   /// rows came from the engine's tally in O(bins). Not state.
+  ///
+  /// The engine keeps the tally only while it pays: a collision costs it about as much as
+  /// a pass costs per particle (docs/benchmarks.md), so when the previous interval between
+  /// rows held more than tally_limit * n collisions, the recorder takes the tally out of
+  /// the engine and makes each row by one pass (same numbers, bit for bit).
   std::uint64_t passes() const { return passes_; }
+  static constexpr double tally_limit = 2.0;
   /// Fine bins of the tally's histograms (0 before the first snapshot).
   std::size_t fine_bins() const { return cfg_.layout.fine; }
 
@@ -192,6 +198,10 @@ class MomentsRecorder final : public Observer {
   std::vector<std::vector<double>> probs_;       // their MB bin probabilities at cfg_.kT
   std::vector<double> fine_cdf_;                 // MB CDF of the pooled speed at fine edges
   std::uint64_t passes_ = 0;
+  // collisions at the previous row (keep_tally); not state: a restored recorder installs
+  // the tally again, and the rows are the same either way
+  std::uint64_t last_collisions_ = 0;
+  bool have_last_ = false;
   /// The thread team of set_threads; a copy of the recorder gets none (one thread), so
   /// that two recorders never drive one team.
   struct Team {

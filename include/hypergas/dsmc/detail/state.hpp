@@ -24,8 +24,9 @@
 
 namespace hypergas::dsmc::detail {
 
-/// What a collision reports to: nothing (NoHook, the plain kernel) or a tally
-/// (TallyHook: the old and new velocities of both particles, hypergas/tally/tally.hpp).
+/// What a collision reports to: nothing (NoHook, the plain kernel), a tally (TallyHook: the
+/// old and new velocities of both particles, hypergas/tally/tally.hpp) or collective fluxes
+/// (FluxHook, hypergas/tally/fluxes.hpp).
 /// The candidate loop is compiled once for each, so a run without a tally runs the
 /// same code as an engine that has none.
 struct NoHook {
@@ -42,6 +43,25 @@ struct TallyHook {
     int si = 0, sj = 0;
     if constexpr (F.species) si = p.species(i), sj = p.species(j);
     t->exchange<D, F.species>(oi, oj, ni, nj, si, sj);
+  }
+};
+/// Collective fluxes (tally/fluxes.hpp: one species only), with or without a tally.
+template <bool WithTally>
+struct FluxHook {
+  static constexpr bool active = true;
+  tally::Fluxes* f = nullptr;
+  tally::Tally* t = nullptr;
+  template <int D, Features F>
+  [[gnu::always_inline]] void collided(const Particles<D, F>& p, std::uint32_t i,
+                                       std::uint32_t j, const double* oi, const double* oj,
+                                       const double* ni, const double* nj) const {
+    f->exchange<D>(oi, oj, ni, nj);
+    if constexpr (WithTally) TallyHook{t}.collided(p, i, j, oi, oj, ni, nj);
+  }
+  /// Candidate K collided i and j (old velocities oi, oj): tagged particles' displacements.
+  [[gnu::always_inline]] void at_candidate(std::uint64_t K, std::uint32_t i, std::uint32_t j,
+                                           const double* oi, const double* oj) const {
+    f->tagged_collision(K, i, j, oi, oj);
   }
 };
 
@@ -119,6 +139,8 @@ struct State {
       const Vec<D> oi = vi, oj = vj;
       apply_deflection<D>(p, i, j, vi, vj, delta);
       hook.collided(p, i, j, oi.data(), oj.data(), vi.data(), vj.data());
+      if constexpr (requires { hook.at_candidate(K, i, j, oi.data(), oj.data()); })
+        hook.at_candidate(K, i, j, oi.data(), oj.data());
     } else {
       (void)hook;
       apply_deflection<D>(p, i, j, vi, vj, delta);

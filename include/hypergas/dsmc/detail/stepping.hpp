@@ -46,7 +46,18 @@ void retune(State<D, Model, F>& s, bool force) {
 template <bool Exact, int D, class Model, Features F>
 std::uint64_t process(State<D, Model, F>& s, ParallelBlocks& blocks, std::uint64_t m) {
   std::uint64_t k;
-  if (blocks.takes(m)) {
+  if (s.tally.fluxes) {  // collective fluxes: the one-thread loop (transport runs are small)
+    Lane lane;
+    tally::Fluxes* f = s.tally.fluxes.get();
+    if (tally::Tally* t = s.tally.tally.get())
+      k = run_lane<Exact, false, false>(s, lane, s.candidates, m, s.bound.bound(),
+                                        FluxHook<true>{f, t});
+    else
+      k = run_lane<Exact, false, false>(s, lane, s.candidates, m, s.bound.bound(),
+                                        FluxHook<false>{f, nullptr});
+    s.collisions += lane.collisions;
+    s.raise_to = std::max(s.raise_to, lane.raise_s2);
+  } else if (blocks.takes(m)) {
     k = blocks.process<Exact>(s, m);
   } else {
     Lane lane;
@@ -62,6 +73,18 @@ std::uint64_t process(State<D, Model, F>& s, ParallelBlocks& blocks, std::uint64
   return k;
 }
 
+/// After an epoch (or NTC step) of m candidates from `first` on over [t0, s.time]: the
+/// tagged particles of installed fluxes integrate their displacements (tally/fluxes.hpp).
+template <int D, class Model, Features F>
+void end_epoch(State<D, Model, F>& s, double t0, std::uint64_t first, std::uint64_t m,
+               bool last_at_end) {
+  if (!s.tally.fluxes || s.tally.fluxes->tagged() == 0) return;
+  const double* v = s.p.velocity_data().data();
+  s.tally.fluxes->epoch(t0, s.time, first, m, last_at_end, [&](std::uint32_t i) {
+    return v + std::size_t(i) * State<D, Model, F>::stride;
+  });
+}
+
 /// Exact scheme: Poisson epochs of at most ~2N candidates up to t_end.
 template <int D, class Model, Features F>
 void advance_exact(State<D, Model, F>& s, ParallelBlocks& blocks,
@@ -74,8 +97,11 @@ void advance_exact(State<D, Model, F>& s, ParallelBlocks& blocks,
     if (capped) h = hmax;
     std::poisson_distribution<std::uint64_t> pois(s.lambda * h);
     const std::uint64_t m = pois(s.rng);
+    const double t0 = s.time;
+    const std::uint64_t first = s.candidates;
     const std::uint64_t k = process<true>(s, blocks, m);
     s.since_scan += k;
+    const bool raised = s.raise_to != 0.0;
     // a raise stops the epoch at its candidate, the m-th included (raise_to is set)
     if (s.raise_to == 0.0) {
       s.time = capped ? s.time + h : t_end;
@@ -89,6 +115,7 @@ void advance_exact(State<D, Model, F>& s, ParallelBlocks& blocks,
       s.raise_to = 0.0;
       set_lambda(s);
     }
+    end_epoch(s, t0, first, k, raised);
     if (poll) poll();
   }
 }
@@ -104,6 +131,8 @@ void advance_ntc(State<D, Model, F>& s, ParallelBlocks& blocks,
     const bool last = h >= t_end - s.time;
     if (last) h = t_end - s.time;
     const auto m = static_cast<std::uint64_t>(std::floor(s.lambda * h + s.rng.uniform()));
+    const double t0 = s.time;
+    const std::uint64_t first = s.candidates;
     process<false>(s, blocks, m);
     s.since_scan += m;
     if (s.raise_to > 0.0) {  // the bound catches up only at the end of the step
@@ -112,6 +141,7 @@ void advance_ntc(State<D, Model, F>& s, ParallelBlocks& blocks,
       set_lambda(s);
     }
     s.time = last ? t_end : s.time + h;
+    end_epoch(s, t0, first, m, false);
     if (poll) poll();
   }
 }

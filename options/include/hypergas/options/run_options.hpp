@@ -41,6 +41,10 @@ struct RunOptions {
   int replicas = 0;            ///< DSMC: independent copies (seeds derived from seed)
   double checkpoint_every = 0.0;  ///< checkpoint every this much engine time (0 = off)
   std::string checkpoint_wall;    ///< checkpoint every this much wall time ("90s", "10min")
+  bool transport = false;         ///< DSMC: Green-Kubo transport coefficients
+  double correlation_dt = 0.0;    ///< their sampling interval
+  double correlation_time = 0.0;  ///< their longest lag
+  int tagged = 0;                 ///< their tagged particles (self-diffusion)
   std::vector<std::string> given;  ///< options set explicitly, as "--name", in order
 
   /// Whether option `name` ("--packing") was set explicitly.
@@ -58,6 +62,9 @@ struct RunOptions {
 /// schedule, checkpoints with replicas, the packing against jamming in D, --start-packing
 /// against --packing, the memory the state needs. Throws InvalidInput naming the options.
 void validate(const RunOptions& o);
+
+/// --transport samples from this time on (mean collision times): the start relaxes first.
+inline constexpr double transport_warmup = 20.0;
 
 /// The engine configurations that valid options describe.
 dsmc::Config dsmc_config(const RunOptions& o);

@@ -1,0 +1,316 @@
+// Green-Kubo transport coefficients of the velocity-space engine (transport_recorder.hpp).
+#include "hypergas/analysis/transport_recorder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <memory>
+#include <sstream>
+
+#include "hypergas/analysis/output.hpp"
+#include "hypergas/error.hpp"
+#include "hypergas/tally/tally.hpp"
+
+namespace hypergas::analysis {
+
+namespace {
+
+constexpr int n_groups = 3;  // Green-Kubo integrals; group 3: displacement increments
+const char* const names[n_groups + 1] = {"viscosity", "thermal_conductivity", "self_diffusion",
+                                         "self_diffusion_einstein"};
+
+std::vector<int> layout(int d, int tagged) {
+  std::vector<int> g;
+  for (int k = 0; k < d * (d - 1) / 2 + (d - 1); ++k) g.push_back(0);
+  for (int k = 0; k < d; ++k) g.push_back(1);
+  for (int k = 0; k < tagged * d; ++k) g.push_back(2);
+  for (int k = 0; k < tagged * d; ++k) g.push_back(3);
+  return g;
+}
+
+std::size_t lag_count(const TransportSettings& s) {
+  const auto k = static_cast<std::size_t>(std::ceil(s.max_lag / s.dt - 1e-9)) + 1;
+  return (k + 15) / 16 * 16;
+}
+
+/// Trapezoid integrals I(k) = int_0^{k dt} C.
+std::vector<double> running_integral(const std::vector<double>& c, double dt) {
+  std::vector<double> I(c.size(), 0.0);
+  for (std::size_t k = 1; k < c.size(); ++k) I[k] = I[k - 1] + 0.5 * dt * (c[k - 1] + c[k]);
+  return I;
+}
+
+/// Least-squares slope of ln c over lags first .. last (points with c > 0), negated; NaN
+/// with fewer than two points.
+double log_slope(const std::vector<double>& c, double dt, std::size_t first, std::size_t last);
+
+/// The integral of curve c with the cut at lag k: the trapezoid sum I[k], its end
+/// corrections (Euler-Maclaurin: + h^2/12 (C'(0+) - C'(t_c)), C'(0+) from the first three
+/// points, C'(t_c) from the tail), and the tail beyond t_c: C(t_c) / g for the tail's decay
+/// rate g (tail_rate). Returns {value, tail}.
+std::pair<double, double> cut_value(const std::vector<double>& c, const std::vector<double>& I,
+                                    std::size_t k, double dt, double g) {
+  const double tail = g > 0.0 ? c[k] / g : 0.0;
+  const double d0 = c.size() > 2 ? (-3.0 * c[0] + 4.0 * c[1] - c[2]) / (2.0 * dt) : 0.0;
+  const double dk = -(g > 0.0 ? g : 0.0) * c[k];
+  return {I[k] + dt * dt / 12.0 * (d0 - dk) + tail, tail};
+}
+
+double log_slope(const std::vector<double>& c, double dt, std::size_t first, std::size_t last) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
+  for (std::size_t k = first; k <= last && k < c.size(); ++k) {
+    if (!(c[k] > 0.0)) continue;
+    const double x = static_cast<double>(k) * dt, y = std::log(c[k]);
+    sx += x, sy += y, sxx += x * x, sxy += x * y, m += 1;
+  }
+  if (m < 2) return std::numeric_limits<double>::quiet_NaN();
+  return -(m * sxy - sx * sy) / (m * sxx - sx * sx);
+}
+
+/// The tail's decay rate: of ln C over lags [k / 2, k], or C(0) / I[k] if that fit fails.
+double tail_rate(const std::vector<double>& c, const std::vector<double>& I, std::size_t k,
+                 double dt) {
+  const double g = log_slope(c, dt, k / 2, k);
+  if (g > 0.0) return g;
+  return c[0] != 0.0 && I[k] > 0.0 ? c[0] / I[k] : 0.0;
+}
+
+/// Decay rate of C over lags 0 .. last.
+double decay_rate(const std::vector<double>& c, double dt, std::size_t last) {
+  return log_slope(c, dt, 0, last);
+}
+
+std::pair<double, double> mean_se(const std::vector<double>& x) {
+  const double n = static_cast<double>(x.size());
+  if (x.size() < 2) return {x.empty() ? 0.0 : x[0], std::numeric_limits<double>::quiet_NaN()};
+  double m = 0;
+  for (double v : x) m += v;
+  m /= n;
+  double s2 = 0;
+  for (double v : x) s2 += (v - m) * (v - m);
+  return {m, std::sqrt(s2 / (n - 1) / n)};
+}
+
+}  // namespace
+
+std::vector<double> first_sonine(const std::string& model, double a, int d) {
+  if (d < 2) throw InvalidInput("transport: no first Sonine value in D = 1");
+  const double D = d;
+  double eta = 0.0, ds = 0.0;
+  if (model == "hs") {
+    eta = (D + 2.0) / 4.0;
+    ds = D / 2.0;
+  } else if (model == "maxwell" || model == "vhs") {
+    if (model == "maxwell") a = 0.0;
+    eta = 2.0 * D * (D + 2.0) / ((D + a) * (D + a + 2.0));
+    ds = 2.0 * D / (D + a);
+  } else {
+    throw InvalidInput("transport: no first Sonine values for model " + model);
+  }
+  return {eta, D * (D + 2.0) / (2.0 * (D - 1.0)) * eta, ds};
+}
+
+TransportRecorder::TransportRecorder(const TransportSettings& s, int dim, std::size_t n,
+                                     std::uint64_t frames, std::string model, double exponent)
+    : set_(s),
+      dim_(dim),
+      n_(n),
+      model_(std::move(model)),
+      exponent_(exponent),
+      corr_((dim >= 2 && dim <= 6 && s.tagged >= 1 && s.dt > 0 && s.max_lag > s.dt &&
+             s.error_blocks >= 2)
+                ? BlockCorrelator(layout(dim, std::min<int>(s.tagged, int(std::min<std::size_t>(n, 1u << 20)))),
+                                  lag_count(s), frames, s.error_blocks)
+                : throw InvalidInput(
+                      "transport: needs D in 2..6, tagged >= 1, dt > 0, max_lag > dt and >= 2 "
+                      "error blocks")) {
+  first_sonine(model_, exponent_, dim_);  // checks the model
+  const auto t = static_cast<std::size_t>(std::min<std::size_t>(std::size_t(set_.tagged), n_));
+  for (std::size_t k = 0; k < t; ++k) tagged_.push_back(k * n_ / t);
+  frame_.resize(std::size_t(corr_.series()));
+}
+
+void TransportRecorder::observe(const Snapshot& s) {
+  if (s.time < set_.warmup - 1e-9 * std::max(1.0, set_.warmup)) return;
+  if (!result_.empty()) throw InvalidInput("transport: observe after finish");
+  if (s.dim != dim_ || s.n != n_)
+    throw InvalidInput("transport: the snapshot's D or N differs from the recorder's");
+  if (s.species || s.inv_mass)
+    throw InvalidInput("transport: one species of unit mass only (no --mass-ratio)");
+  if (!s.tally)
+    throw InvalidInput("transport: the engine keeps no collision-level tally (DSMC only)");
+  const auto stride = static_cast<std::size_t>(s.stride);
+  if (!s.tally->fluxes) {  // the first sample (or the first after a restore): from the state
+    if (kT_ == 0.0) {
+      double e2 = 0.0;
+      for (std::size_t i = 0; i < n_; ++i)
+        for (int a = 0; a < dim_; ++a) {
+          const double v = s.velocities[i * stride + std::size_t(a)];
+          e2 += v * v;
+        }
+      kT_ = e2 / (dim_ * (static_cast<double>(n_) - 1.0));
+    }
+    auto f = std::make_unique<tally::Fluxes>(dim_, kT_);
+    for (std::size_t i = 0; i < n_; ++i) f->add(s.velocities + i * stride, 1);
+    std::vector<std::uint32_t> idx(tagged_.begin(), tagged_.end());
+    f->tag(idx, n_, set_.seed);
+    s.tally->fluxes = std::move(f);
+    last_x_.assign(tagged_.size() * std::size_t(dim_), 0.0);
+  }
+  const tally::Fluxes& f = *s.tally->fluxes;
+  const double sn = std::sqrt(static_cast<double>(n_));
+  const double us = 1.0 / (sn * kT_), uq = 1.0 / (sn * kT_ * std::sqrt(kT_));
+  const double uv = 1.0 / std::sqrt(kT_);
+  std::size_t k = 0;
+  for (int a = 0; a < dim_; ++a)
+    for (int b = a + 1; b < dim_; ++b) frame_[k++] = f.value(f.stress_index(a, b)) * us;
+  for (int a = 0; a + 1 < dim_; ++a)
+    frame_[k++] =
+        0.5 * (f.value(f.stress_index(a, a)) - f.value(f.stress_index(a + 1, a + 1))) * us;
+  for (int a = 0; a < dim_; ++a) frame_[k++] = 0.5 * f.value(f.heat_index(a)) * uq;
+  for (std::size_t i : tagged_)
+    for (int a = 0; a < dim_; ++a) frame_[k++] = s.velocities[i * stride + std::size_t(a)] * uv;
+  // displacement increments since the previous sample (0 at the first)
+  for (std::size_t t = 0; t < tagged_.size(); ++t)
+    for (int a = 0; a < dim_; ++a) {
+      const double x = f.displacement(t, a);
+      double& last = last_x_[t * std::size_t(dim_) + std::size_t(a)];
+      frame_[k++] = corr_.frames() == 0 ? 0.0 : (x - last) * uv;
+      last = x;
+    }
+  corr_.push(frame_.data());
+}
+
+const std::vector<TransportCoefficient>& TransportRecorder::finish() {
+  if (!result_.empty()) return result_;
+  corr_.finish();
+  if (corr_.frames() < corr_.lags())
+    throw InvalidInput("transport: " + std::to_string(corr_.frames()) +
+                       " samples, fewer than the " + std::to_string(corr_.lags()) +
+                       " lags of one correlation window: run longer");
+  const std::vector<double> ref = first_sonine(model_, exponent_, dim_);
+  const double dt = set_.dt;
+  const double c0_mb[n_groups] = {1.0, (dim_ + 2.0) / 2.0, 1.0};
+  const int J = corr_.stretches();
+  for (int g = 0; g < n_groups; ++g) {
+    const std::vector<double> c = corr_.mean(g);
+    const std::vector<double> I = running_integral(c, dt);
+    std::size_t cut = c.size() - 1;
+    for (std::size_t k = 1; k < c.size(); ++k)
+      if (static_cast<double>(k) * dt >= set_.window * I[k] / c[0]) {
+        cut = k;
+        break;
+      }
+    const std::size_t fit_last =
+        std::max<std::size_t>(2, static_cast<std::size_t>(1.5 * I[cut] / c[0] / dt));
+    // one tail rate, from the whole run, for every stretch: a fit per stretch is noisy
+    const double rate_tail = tail_rate(c, I, cut, dt);
+    std::vector<double> vals, rates;
+    for (int j = 0; j < J; ++j) {
+      const std::vector<double> cj = corr_.stretch_mean(g, j);
+      vals.push_back(cut_value(cj, running_integral(cj, dt), cut, dt, rate_tail).first);
+      rates.push_back(decay_rate(cj, dt, fit_last));
+    }
+    TransportCoefficient r;
+    r.name = names[g];
+    const auto [value, tail] = cut_value(c, I, cut, dt, rate_tail);
+    r.value = value;
+    r.error = mean_se(vals).second;
+    r.sonine = ref[std::size_t(g)];
+    r.ratio = r.value / r.sonine;
+    r.ratio_error = r.error / r.sonine;
+    r.c0 = c[0];
+    r.t_cut = static_cast<double>(cut) * dt;
+    r.tail = tail;
+    r.rate = decay_rate(c, dt, fit_last);
+    r.rate_error = mean_se(rates).second;
+    r.sonine_rate = c0_mb[g] / r.sonine;
+    r.stretches = vals;
+    result_.push_back(r);
+    std::vector<double> norm(c.size());
+    for (std::size_t k = 0; k < c.size(); ++k) norm[k] = c[k] / c[0];
+    curves_.push_back(std::move(norm));
+  }
+  // Einstein: the mean square displacement of the tagged particles grows as 2 D_s t; with
+  // exact increments d_n over the sampling intervals, its slope is
+  // [C_d(0) + 2 sum_{l >= 1} C_d(l)] / dt per component (the same cut and tail rule as the
+  // velocity autocorrelation, the tail of the sum geometric: C_d(k_c) q / (1 - q),
+  // q = exp(-g dt))
+  {
+    const std::vector<double> cd = corr_.mean(3);
+    const std::size_t cut = static_cast<std::size_t>(std::llround(result_[2].t_cut / dt));
+    const std::vector<double> I = running_integral(cd, dt);
+    const double g = tail_rate(cd, I, cut, dt);
+    const double q = std::exp(-g * dt);
+    const auto slope = [&](const std::vector<double>& x) {
+      double sum = x[0];
+      for (std::size_t l = 1; l <= cut; ++l) sum += 2.0 * x[l];
+      if (g > 0.0) sum += 2.0 * x[cut] * q / (1.0 - q);  // sum_{l > k_c} of C_d(k_c) q^(l - k_c)
+      return sum / (2.0 * dt);
+    };
+    std::vector<double> vals;
+    for (int j = 0; j < J; ++j) vals.push_back(slope(corr_.stretch_mean(3, j)));
+    TransportCoefficient r;
+    r.name = names[3];
+    r.value = slope(cd);
+    r.error = mean_se(vals).second;
+    r.sonine = ref[2];
+    r.ratio = r.value / r.sonine;
+    r.ratio_error = r.error / r.sonine;
+    r.c0 = cd[0];
+    r.t_cut = static_cast<double>(cut) * dt;
+    r.tail = g > 0.0 ? cd[cut] * q / (1.0 - q) / dt : 0.0;
+    r.rate = r.rate_error = r.sonine_rate = std::numeric_limits<double>::quiet_NaN();
+    r.stretches = vals;
+    result_.push_back(r);
+  }
+  return result_;
+}
+
+std::vector<double> TransportRecorder::normalised(int g) const {
+  if (curves_.empty()) throw InvalidInput("transport: results before finish()");
+  return curves_.at(std::size_t(g));
+}
+
+void TransportRecorder::write_transport_csv(const std::string& path) const {
+  if (result_.empty()) throw InvalidInput("transport: results before finish()");
+  write_file_atomic(path, [&](std::ostream& o) {
+    o << "coefficient,value,error,first_sonine,ratio,ratio_error,t_cut,tail,c0,decay_rate,"
+         "decay_rate_error,first_sonine_rate\n";
+    o << std::setprecision(17);
+    const auto num = [&](double x) -> std::ostream& {
+      if (std::isfinite(x)) o << x;
+      return o;
+    };
+    for (const auto& r : result_) {
+      o << r.name;
+      for (double x : {r.value, r.error, r.sonine, r.ratio, r.ratio_error, r.t_cut, r.tail, r.c0,
+                       r.rate, r.rate_error, r.sonine_rate}) {
+        o << ',';
+        num(x);
+      }
+      o << '\n';
+    }
+  });
+}
+
+void TransportRecorder::write_correlations_csv(const std::string& path) const {
+  if (result_.empty()) throw InvalidInput("transport: results before finish()");
+  std::vector<std::vector<double>> rows;
+  for (std::size_t k = 0; k < curves_[0].size(); ++k) {
+    const double t = static_cast<double>(k) * set_.dt;
+    std::vector<double> row{t};
+    for (int g = 0; g < n_groups; ++g) {
+      row.push_back(curves_[std::size_t(g)][k]);
+      row.push_back(std::exp(-t * result_[std::size_t(g)].sonine_rate));
+    }
+    rows.push_back(std::move(row));
+  }
+  write_csv(path,
+            {"time", "viscosity", "viscosity_sonine", "thermal_conductivity",
+             "thermal_conductivity_sonine", "self_diffusion", "self_diffusion_sonine"},
+            rows);
+}
+
+}  // namespace hypergas::analysis

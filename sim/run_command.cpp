@@ -28,6 +28,8 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume) {
   if (o.replicas == 1)
     ctx.checkpoints = Checkpointer(out.dir(), o.checkpoint_every, o.checkpoint_wall_seconds());
   ctx.resume = resume;
+  // gnuplot starts now, so that its start overlaps the run (its script follows the CSVs)
+  studies::GnuplotProcess plot(out.staging());
   RunRecord rec = simulate(o, true, ctx);
   // CSV and plots first, so that summary.json can say how long they took (output_s).
   const auto t0 = std::chrono::steady_clock::now();
@@ -38,8 +40,7 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume) {
     rec.transport->write_transport_csv(out.staged("transport.csv").string());
     rec.transport->write_correlations_csv(out.staged("correlations.csv").string());
   }
-  studies::run_gnuplot(run_plot_script(rec.vacf && rec.vacf->frames() >= 2, bool(rec.transport)),
-                       out.staging());
+  plot.finish(run_plot_script(rec.vacf && rec.vacf->frames() >= 2, bool(rec.transport)));
   rec.summary.emplace_back(
       "output_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   const analysis::JsonObject& summary = rec.summary;

@@ -20,6 +20,7 @@
 //
 // Usage: example_08 [--short]   (writes transport_D<d>.csv in the current folder)
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -60,13 +61,17 @@ int main(int argc, char** argv) {
   const double until = short_run ? 2000.0 : 200000.0;
   fmt::print("hard spheres, N = 1000, {} mean collision times per D; reduced coefficients\n",
              until);
-  fmt::print("{:>2}  {:>22}  {:>22}  {:>22}\n", "D", "eta / eta_0", "lambda / lambda_0",
-             "D_s / D_0");
+  fmt::print("{:>2}  {:>22}  {:>22}  {:>22}  {:>22}  {:>6}\n", "D", "eta / eta_0",
+             "lambda / lambda_0", "D_s / D_0 (Green-Kubo)", "D_s / D_0 (Einstein)", "s");
   bool ok = true;
+  auto t0 = std::chrono::steady_clock::now();
   const auto row = [&](int d, const std::vector<analysis::TransportCoefficient>& r) {
+    const auto t1 = std::chrono::steady_clock::now();
     fmt::print("{:>2}", d);
-    for (const auto& c : r) fmt::print("  {:>8.4f} +- {:.4f} ({:4.2f})", c.ratio, c.ratio_error, c.sonine);
-    fmt::print("\n");
+    for (const auto& c : r)
+      fmt::print("  {:>8.4f} +- {:.4f} ({:4.2f})", c.ratio, c.ratio_error, c.sonine);
+    fmt::print("  {:>6.1f}\n", std::chrono::duration<double>(t1 - t0).count());
+    t0 = t1;
     // what you should see: every ratio within a few per cent above 1 (the first Sonine
     // approximation is a lower bound of the viscosity and conductivity of hard spheres,
     // a variational result), and within 6 se of 1..1.06 (a check, false failure ~1e-8)

@@ -19,6 +19,7 @@ using R = RunOptions;
 
 constexpr std::string_view time_unit =
     "dsmc: equilibrium mean collision times; edmd: sigma sqrt(m/kT)";
+constexpr std::string_view dsmc_time_unit = "equilibrium mean collision times";
 
 void check_engine(std::string_view v) { (void)registry::engine(v); }
 void check_model(std::string_view v) { (void)registry::model(v); }
@@ -61,9 +62,9 @@ const Option table[] = {
   {"replicas", 0, E::dsmc, U::command, &R::replicas, {1, 64, false, false, "in 1..64"}, nullptr, nullptr, "", "run K independent copies (files from copy 0, which keeps --seed; summary adds totals and replica error bars)", "", false, false},
   {"checkpoint-every", 0, E::both, U::command, &R::checkpoint_every, {pos_open, 1e308, true, false, "a finite time > 0"}, nullptr, nullptr, time_unit, "write OUT/checkpoint.hgck at the first sampling time after every T time units; continue a stopped run with `hypergas resume OUT`. Ctrl-C always writes one and stops", "off", false, false},
   {"checkpoint-wall", 0, E::both, U::command, &R::checkpoint_wall, {}, check_duration, nullptr, "", "also write a checkpoint after this much wall time, e.g. 90s, 10min, 2h", "off", false, false},
-  {"transport", 0, E::dsmc, U::command, &R::transport, {}, nullptr, nullptr, "", "also measure viscosity, thermal conductivity and self-diffusion by Green-Kubo from equilibrium fluctuations after t = 20 (transport.csv, correlations.csv, transport.png); one species, D >= 2, one thread; run long: errors fall as 1/sqrt(until), not with n (docs/validation.md)", "", false, false},
-  {"correlation-dt", 0, E::dsmc, U::command, &R::correlation_dt, {pos_open, 1, true, false, "a finite interval > 0 and at most 1"}, nullptr, nullptr, time_unit, "with --transport: sampling interval of the fluxes (rounded to divide the --every interval)", "", false, false},
-  {"correlation-time", 0, E::dsmc, U::command, &R::correlation_time, {pos_open, 1e4, true, false, "a finite time > 0 and at most 1e4"}, nullptr, nullptr, time_unit, "with --transport: longest lag of the correlation functions", "", false, false},
+  {"transport", 0, E::dsmc, U::command, &R::transport, {}, nullptr, nullptr, "", "also measure viscosity, thermal conductivity and self-diffusion by Green-Kubo from equilibrium fluctuations after t = 20 (transport.csv, correlations.csv, transport.png); one species, D >= 2, one thread; run long: errors fall as 1/sqrt(until), not with n, and the values carry O(1/N) terms (docs/validation.md)", "", false, false},
+  {"correlation-dt", 0, E::dsmc, U::command, &R::correlation_dt, {pos_open, 1, true, false, "a finite interval > 0 and at most 1"}, nullptr, nullptr, dsmc_time_unit, "with --transport: sampling interval of the fluxes (rounded to divide the --every interval)", "", false, false},
+  {"correlation-time", 0, E::dsmc, U::command, &R::correlation_time, {pos_open, 1e4, true, false, "a finite time > 0 and at most 1e4"}, nullptr, nullptr, dsmc_time_unit, "with --transport: longest lag of the correlation functions", "", false, false},
   {"tagged", 0, E::dsmc, U::command, &R::tagged, {1, 4096, false, false, "in 1..4096"}, nullptr, nullptr, "", "with --transport: tagged particles whose velocity autocorrelation gives self-diffusion", "", false, false},
 };
 // clang-format on

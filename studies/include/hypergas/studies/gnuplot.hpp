@@ -15,6 +15,25 @@ namespace hypergas::studies {
 /// if gnuplot fails (its messages go to stderr).
 bool run_gnuplot(std::string_view script, const std::filesystem::path& dir);
 
+/// A gnuplot process started ahead of its script: the program's start (most of a plot's
+/// wall time, 0.03-0.1 s) then overlaps the caller's work, and finish() only feeds the
+/// script and waits. Without gnuplot on PATH it does nothing and finish() warns as
+/// run_gnuplot does. Destroyed unfinished (an exception, Ctrl-C), it kills the process and
+/// reaps it: nothing is plotted.
+class GnuplotProcess {
+ public:
+  explicit GnuplotProcess(const std::filesystem::path& dir);
+  ~GnuplotProcess();
+  GnuplotProcess(const GnuplotProcess&) = delete;
+  GnuplotProcess& operator=(const GnuplotProcess&) = delete;
+  /// Feeds `script` to gnuplot and waits for it; as run_gnuplot's return value.
+  bool finish(std::string_view script);
+
+ private:
+  int pid_ = -1;
+  int fd_ = -1;
+};
+
 /// True when a `gnuplot` executable is on PATH.
 bool gnuplot_available();
 

@@ -25,7 +25,9 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume) {
   OutputDir out(o.out);
   const bool edmd = o.engine_kind() == registry::EngineKind::edmd;
   RunContext ctx;
-  if (o.replicas == 1)
+  // no checkpoint, not even at Ctrl-C, for --transport: its correlations are not saved, so
+  // a resumed run would report a part of the run as the whole
+  if (o.replicas == 1 && !o.transport)
     ctx.checkpoints = Checkpointer(out.dir(), o.checkpoint_every, o.checkpoint_wall_seconds());
   ctx.resume = resume;
   // gnuplot starts now, so that its start overlaps the run (its script follows the CSVs)

@@ -26,10 +26,11 @@
 //
 // Each integral I(t) = int_0^t C is the trapezoid rule on the grid. Its cut: the first lag
 // t_c with t_c >= window * I(t_c) / C(0) (an automatic window at `window` integral times,
-// after Sokal), or the largest lag if none; the tail beyond it is estimated as
-// C(t_c) I(t_c) / C(0) (an exponential of the integral time) and added; its size is
-// reported. Errors: the same cut and tail in each of the correlator's error stretches; the
-// standard error of the mean over stretches. The decay rate: a least-squares line through
+// after Sokal), or the largest lag if none; the Euler-Maclaurin end corrections
+// h^2/12 (C'(0+) - C'(t_c)) and the tail beyond the cut, C(t_c) / g with g the decay rate
+// of ln C over [t_c / 2, t_c] on the whole run (C(0) / I(t_c) if that fit fails), are
+// added; the tail's size is reported. Errors: the same cut, g and corrections in each of
+// the correlator's error stretches; the standard error of the mean over stretches. The decay rate: a least-squares line through
 // ln C(t) over t <= 1.5 I / C(0) (C above ~e^-1.5 of C(0)), per stretch for its error.
 //
 // References (docs/validation.md derives them): the first Sonine (Chapman-Enskog)

@@ -12,6 +12,7 @@
 #include <random>
 
 #include "hypergas/dsmc/config.hpp"
+#include "hypergas/error.hpp"
 #include "hypergas/dsmc/detail/lane.hpp"
 #include "hypergas/dsmc/detail/parallel.hpp"
 #include "hypergas/dsmc/detail/state.hpp"
@@ -45,19 +46,30 @@ void retune(State<D, Model, F>& s, bool force) {
 /// maximum squared speed). NTC: never stops; records the largest such speed.
 template <bool Exact, int D, class Model, Features F>
 std::uint64_t process(State<D, Model, F>& s, ParallelBlocks& blocks, std::uint64_t m) {
+  // Collective fluxes: the one-thread loop (transport runs are small). They are defined for
+  // one species and the exact scheme only, and compiled for those engines alone (each hook
+  // is another instantiation of the candidate loop, and the command's build time counts).
+  if (s.tally.fluxes) {
+    if constexpr (Exact && !F.species) {
+      Lane lane;
+      tally::Fluxes* f = s.tally.fluxes.get();
+      std::uint64_t k;
+      if (tally::Tally* t = s.tally.tally.get())
+        k = run_lane<Exact, false, false>(s, lane, s.candidates, m, s.bound.bound(),
+                                          FluxHook<true>{f, t});
+      else
+        k = run_lane<Exact, false, false>(s, lane, s.candidates, m, s.bound.bound(),
+                                          FluxHook<false>{f, nullptr});
+      s.collisions += lane.collisions;
+      s.raise_to = std::max(s.raise_to, lane.raise_s2);
+      s.candidates += k;
+      return k;
+    } else {
+      throw InvalidInput("collective fluxes need one species and the exact scheme");
+    }
+  }
   std::uint64_t k;
-  if (s.tally.fluxes) {  // collective fluxes: the one-thread loop (transport runs are small)
-    Lane lane;
-    tally::Fluxes* f = s.tally.fluxes.get();
-    if (tally::Tally* t = s.tally.tally.get())
-      k = run_lane<Exact, false, false>(s, lane, s.candidates, m, s.bound.bound(),
-                                        FluxHook<true>{f, t});
-    else
-      k = run_lane<Exact, false, false>(s, lane, s.candidates, m, s.bound.bound(),
-                                        FluxHook<false>{f, nullptr});
-    s.collisions += lane.collisions;
-    s.raise_to = std::max(s.raise_to, lane.raise_s2);
-  } else if (blocks.takes(m)) {
+  if (blocks.takes(m)) {
     k = blocks.process<Exact>(s, m);
   } else {
     Lane lane;

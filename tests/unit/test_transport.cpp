@@ -150,3 +150,14 @@ TEST_CASE("First Sonine values: hard spheres and isotropic scattering", "[transp
   }
   REQUIRE_THROWS(analysis::first_sonine("hs", 1.0, 1));
 }
+
+TEST_CASE("Fluxes: refused by the NTC scheme", "[transport]") {
+  dsmc::Config cfg;
+  cfg.n = 2000;
+  cfg.seed = 4;
+  cfg.scheme = dsmc::Scheme::ntc;
+  cfg.dt = 0.1;
+  dsmc::Engine<3, dsmc::HardSpheres> e(cfg);
+  FluxCheck chk;
+  REQUIRE_THROWS_AS(e.run_until(1.0, &chk, 0.5), InvalidInput);
+}

@@ -29,6 +29,15 @@ std::vector<int> layout(int d, int tagged) {
   return g;
 }
 
+/// The correlator's series groups for these settings; throws InvalidInput on bad ones.
+std::vector<int> series_groups(const TransportSettings& s, int dim, std::size_t n) {
+  if (!(dim >= 2 && dim <= 6 && s.tagged >= 1 && s.dt > 0 && s.max_lag > s.dt &&
+        s.error_blocks >= 2))
+    throw InvalidInput(
+        "transport: needs D in 2..6, tagged >= 1, dt > 0, max_lag > dt and >= 2 error blocks");
+  return layout(dim, static_cast<int>(std::min<std::size_t>(std::size_t(s.tagged), n)));
+}
+
 std::size_t lag_count(const TransportSettings& s) {
   const auto k = static_cast<std::size_t>(std::ceil(s.max_lag / s.dt - 1e-9)) + 1;
   return (k + 15) / 16 * 16;
@@ -118,13 +127,7 @@ TransportRecorder::TransportRecorder(const TransportSettings& s, int dim, std::s
       n_(n),
       model_(std::move(model)),
       exponent_(exponent),
-      corr_((dim >= 2 && dim <= 6 && s.tagged >= 1 && s.dt > 0 && s.max_lag > s.dt &&
-             s.error_blocks >= 2)
-                ? BlockCorrelator(layout(dim, std::min<int>(s.tagged, int(std::min<std::size_t>(n, 1u << 20)))),
-                                  lag_count(s), frames, s.error_blocks)
-                : throw InvalidInput(
-                      "transport: needs D in 2..6, tagged >= 1, dt > 0, max_lag > dt and >= 2 "
-                      "error blocks")) {
+      corr_(series_groups(s, dim, n), lag_count(s), frames, s.error_blocks) {
   first_sonine(model_, exponent_, dim_);  // checks the model
   const auto t = static_cast<std::size_t>(std::min<std::size_t>(std::size_t(set_.tagged), n_));
   for (std::size_t k = 0; k < t; ++k) tagged_.push_back(k * n_ / t);

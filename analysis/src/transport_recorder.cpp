@@ -11,8 +11,15 @@
 #include "hypergas/analysis/output.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/tally/tally.hpp"
+#include "integrals.hpp"
 
 namespace hypergas::analysis {
+
+using detail::cut_value;
+using detail::log_slope;
+using detail::mean_se;
+using detail::running_integral;
+using detail::tail_rate;
 
 namespace {
 
@@ -41,64 +48,6 @@ std::vector<int> series_groups(const TransportSettings& s, int dim, std::size_t 
 std::size_t lag_count(const TransportSettings& s) {
   const auto k = static_cast<std::size_t>(std::ceil(s.max_lag / s.dt - 1e-9)) + 1;
   return (k + 15) / 16 * 16;
-}
-
-/// Trapezoid integrals I(k) = int_0^{k dt} C.
-std::vector<double> running_integral(const std::vector<double>& c, double dt) {
-  std::vector<double> I(c.size(), 0.0);
-  for (std::size_t k = 1; k < c.size(); ++k) I[k] = I[k - 1] + 0.5 * dt * (c[k - 1] + c[k]);
-  return I;
-}
-
-/// Least-squares slope of ln c over lags first .. last (points with c > 0), negated; NaN
-/// with fewer than two points.
-double log_slope(const std::vector<double>& c, double dt, std::size_t first, std::size_t last);
-
-/// The integral of curve c with the cut at lag k: the trapezoid sum I[k], its end
-/// corrections (Euler-Maclaurin: + h^2/12 (C'(0+) - C'(t_c)), C'(0+) from the first three
-/// points, C'(t_c) from the tail), and the tail beyond t_c: C(t_c) / g for the tail's decay
-/// rate g (tail_rate). Returns {value, tail}.
-std::pair<double, double> cut_value(const std::vector<double>& c, const std::vector<double>& I,
-                                    std::size_t k, double dt, double g) {
-  const double tail = g > 0.0 ? c[k] / g : 0.0;
-  const double d0 = c.size() > 2 ? (-3.0 * c[0] + 4.0 * c[1] - c[2]) / (2.0 * dt) : 0.0;
-  const double dk = -(g > 0.0 ? g : 0.0) * c[k];
-  return {I[k] + dt * dt / 12.0 * (d0 - dk) + tail, tail};
-}
-
-double log_slope(const std::vector<double>& c, double dt, std::size_t first, std::size_t last) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
-  for (std::size_t k = first; k <= last && k < c.size(); ++k) {
-    if (!(c[k] > 0.0)) continue;
-    const double x = static_cast<double>(k) * dt, y = std::log(c[k]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y, m += 1;
-  }
-  if (m < 2) return std::numeric_limits<double>::quiet_NaN();
-  return -(m * sxy - sx * sy) / (m * sxx - sx * sx);
-}
-
-/// The tail's decay rate: of ln C over lags [k / 2, k], or C(0) / I[k] if that fit fails.
-double tail_rate(const std::vector<double>& c, const std::vector<double>& I, std::size_t k,
-                 double dt) {
-  const double g = log_slope(c, dt, k / 2, k);
-  if (g > 0.0) return g;
-  return c[0] != 0.0 && I[k] > 0.0 ? c[0] / I[k] : 0.0;
-}
-
-/// Decay rate of C over lags 0 .. last.
-double decay_rate(const std::vector<double>& c, double dt, std::size_t last) {
-  return log_slope(c, dt, 0, last);
-}
-
-std::pair<double, double> mean_se(const std::vector<double>& x) {
-  const double n = static_cast<double>(x.size());
-  if (x.size() < 2) return {x.empty() ? 0.0 : x[0], std::numeric_limits<double>::quiet_NaN()};
-  double m = 0;
-  for (double v : x) m += v;
-  m /= n;
-  double s2 = 0;
-  for (double v : x) s2 += (v - m) * (v - m);
-  return {m, std::sqrt(s2 / (n - 1) / n)};
 }
 
 }  // namespace
@@ -199,12 +148,7 @@ const std::vector<TransportCoefficient>& TransportRecorder::finish() {
   for (int g = 0; g < n_groups; ++g) {
     const std::vector<double> c = corr_.mean(g);
     const std::vector<double> I = running_integral(c, dt);
-    std::size_t cut = c.size() - 1;
-    for (std::size_t k = 1; k < c.size(); ++k)
-      if (static_cast<double>(k) * dt >= set_.window * I[k] / c[0]) {
-        cut = k;
-        break;
-      }
+    const std::size_t cut = detail::auto_cut(c, I, dt, set_.window);
     const std::size_t fit_last =
         std::max<std::size_t>(2, static_cast<std::size_t>(1.5 * I[cut] / c[0] / dt));
     // one tail rate, from the whole run, for every stretch: a fit per stretch is noisy
@@ -213,7 +157,7 @@ const std::vector<TransportCoefficient>& TransportRecorder::finish() {
     for (int j = 0; j < J; ++j) {
       const std::vector<double> cj = corr_.stretch_mean(g, j);
       vals.push_back(cut_value(cj, running_integral(cj, dt), cut, dt, rate_tail).first);
-      rates.push_back(decay_rate(cj, dt, fit_last));
+      rates.push_back(log_slope(cj, dt, 0, fit_last));
     }
     TransportCoefficient r;
     r.name = names[g];
@@ -226,10 +170,11 @@ const std::vector<TransportCoefficient>& TransportRecorder::finish() {
     r.c0 = c[0];
     r.t_cut = static_cast<double>(cut) * dt;
     r.tail = tail;
-    r.rate = decay_rate(c, dt, fit_last);
+    r.rate = log_slope(c, dt, 0, fit_last);
     r.rate_error = mean_se(rates).second;
     r.sonine_rate = c0_mb[g] / r.sonine;
     r.stretches = vals;
+    r.enskog = r.sonine, r.enskog_ratio = r.ratio, r.enskog_ratio_error = r.ratio_error;
     result_.push_back(r);
     std::vector<double> norm(c.size());
     for (std::size_t k = 0; k < c.size(); ++k) norm[k] = c[k] / c[0];
@@ -266,6 +211,7 @@ const std::vector<TransportCoefficient>& TransportRecorder::finish() {
     r.tail = g > 0.0 ? cd[cut] * q / (1.0 - q) / dt : 0.0;
     r.rate = r.rate_error = r.sonine_rate = std::numeric_limits<double>::quiet_NaN();
     r.stretches = vals;
+    r.enskog = r.sonine, r.enskog_ratio = r.ratio, r.enskog_ratio_error = r.ratio_error;
     result_.push_back(r);
   }
   return result_;
@@ -276,26 +222,27 @@ std::vector<double> TransportRecorder::normalised(int g) const {
   return curves_.at(std::size_t(g));
 }
 
-void TransportRecorder::write_transport_csv(const std::string& path) const {
-  if (result_.empty()) throw InvalidInput("transport: results before finish()");
+void write_transport_rows(const std::string& path, const std::vector<TransportCoefficient>& rows) {
   write_file_atomic(path, [&](std::ostream& o) {
-    o << "coefficient,value,error,first_sonine,ratio,ratio_error,t_cut,tail,c0,decay_rate,"
-         "decay_rate_error,first_sonine_rate\n";
+    o << "coefficient,value,error,first_sonine,ratio,ratio_error,enskog,enskog_ratio,"
+         "enskog_ratio_error,t_cut,tail,c0,decay_rate,decay_rate_error,first_sonine_rate\n";
     o << std::setprecision(17);
-    const auto num = [&](double x) -> std::ostream& {
-      if (std::isfinite(x)) o << x;
-      return o;
-    };
-    for (const auto& r : result_) {
+    for (const auto& r : rows) {
       o << r.name;
-      for (double x : {r.value, r.error, r.sonine, r.ratio, r.ratio_error, r.t_cut, r.tail, r.c0,
-                       r.rate, r.rate_error, r.sonine_rate}) {
+      for (double x : {r.value, r.error, r.sonine, r.ratio, r.ratio_error, r.enskog,
+                       r.enskog_ratio, r.enskog_ratio_error, r.t_cut, r.tail, r.c0, r.rate,
+                       r.rate_error, r.sonine_rate}) {
         o << ',';
-        num(x);
+        if (std::isfinite(x)) o << x;
       }
       o << '\n';
     }
   });
+}
+
+void TransportRecorder::write_transport_csv(const std::string& path) const {
+  if (result_.empty()) throw InvalidInput("transport: results before finish()");
+  write_transport_rows(path, result_);
 }
 
 void TransportRecorder::write_correlations_csv(const std::string& path) const {

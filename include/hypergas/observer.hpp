@@ -18,6 +18,7 @@ namespace hypergas {
 
 namespace tally {
 struct Slot;
+struct ContactSlot;
 }
 
 /// A read-only view of the particles at one instant. Arrays are valid only during the
@@ -39,6 +40,11 @@ struct Snapshot {
   /// install a tally built from this snapshot; the engine then applies every later
   /// collision to it (tally/tally.hpp).
   tally::Slot* tally = nullptr;
+  /// The EDMD engine's slot for a Helfand tally (tally/helfand.hpp), or nullptr: an
+  /// observer may install one, which every later collision then updates.
+  tally::ContactSlot* contacts = nullptr;
+  /// Side of the periodic box (length units), or 0 (velocity space).
+  double box = 0.0;
 
   /// Inverse mass of particle i (1 for a single unit-mass species).
   double inverse_mass(std::size_t i) const {

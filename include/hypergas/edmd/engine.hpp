@@ -40,6 +40,7 @@
 #include "hypergas/observer.hpp"
 #include "hypergas/particles.hpp"
 #include "hypergas/schedule.hpp"
+#include "hypergas/tally/helfand.hpp"
 
 namespace hypergas::edmd {
 
@@ -117,7 +118,12 @@ class Engine {
         next_sample = ++k <= plan.intervals() ? plan.time(k) : never;
       }
       if (te > t) break;
-      step();
+      // an observer may install a Helfand tally at a sample: the loop then changes kernel
+      if (contacts_.helfand) [[unlikely]] {
+        events_until<true>(t, next_sample);
+      } else {
+        events_until<false>(t, next_sample);
+      }
     }
     s_.now = t;
   }
@@ -126,6 +132,26 @@ class Engine {
   void observe(Observer& obs) const { sample(s_.now, obs); }
   /// Processes exactly one event (a collision, a cell crossing or a re-prediction).
   void step() {
+    if (contacts_.helfand) step_event<true>();
+    else step_event<false>();
+  }
+
+  /// The Helfand tally's slot (tally/helfand.hpp): a recorder installs a tally through a
+  /// snapshot (Snapshot::contacts), and every later collision updates it. Not state: a
+  /// checkpoint holds no tally.
+  tally::ContactSlot& contacts() const { return contacts_; }
+
+ private:
+  /// Processes the events due at or before t and before `sample` (an event at the instant
+  /// of a sample comes after it), in one kernel: with or without the tally.
+  template <bool Record>
+  void events_until(double t, double sample) {
+    for (double te = q_.top_time(); te <= t && te < sample; te = q_.top_time())
+      step_event<Record>();
+  }
+
+  template <bool Record>
+  void step_event() {
     if (s_.ncoll >= next_reorder_) reorder();
     const std::uint32_t i = q_.top();
     look_ahead();
@@ -149,7 +175,7 @@ class Engine {
         return;
       }
       if constexpr (lists) scanner_.prefetch_lists(i, static_cast<std::uint32_t>(j));
-      collide(i, static_cast<std::uint32_t>(j));
+      collide<Record>(i, static_cast<std::uint32_t>(j));
       if constexpr (lists) scanner_.prefetch_records(s_, i, static_cast<std::uint32_t>(j));
       predict(i);
       predict(static_cast<std::uint32_t>(j));
@@ -160,6 +186,8 @@ class Engine {
       if (debug_) check_overlaps();
     }
   }
+
+ public:
 
   // ---- observables --------------------------------------------------------------------
   double time() const { return s_.now; }
@@ -338,6 +366,7 @@ class Engine {
     q_.update(i, std::min(s_.ev[i].t_pair, s_.ev[i].t_cross));
   }
 
+  template <bool Record>
   void collide(std::uint32_t i, std::uint32_t j) {
     State<D, F>& s = s_;
     s.advance(i);
@@ -348,6 +377,7 @@ class Engine {
     const Vec<D> n = r / rn;
     const double wi = s.p.inv_mass(i), wj = s.p.inv_mass(j);
     const Vec<D> vi0 = s.p.velocity(i);
+    [[maybe_unused]] const Vec<D> vj0 = s.p.velocity(j);
     detail::collide_unchecked<D>(s.p.velocity(i), s.p.velocity(j), wi, wj, n);
     if (s.rate != 0.0) {  // LS: separate at least as fast as the contact distance grows
       const double a = 2.0 * s.base_contact(i, j) * s.rate;
@@ -355,6 +385,11 @@ class Engine {
       s.p.velocity(j) -= (a * wj / (wi + wj)) * n;
     }
     win_.virial += (s.p.velocity(i) - vi0).dot(r) / wi;
+    if constexpr (Record) {
+      const Vec<D> vi1 = s.p.velocity(i), vj1 = s.p.velocity(j);
+      contacts_.helfand->template collision<D>(s.now, s.id[i], s.id[j], vi0.data(), vj0.data(),
+                                               vi1.data(), vj1.data(), r.data());
+    }
     ++s.cnt[i];
     ++s.cnt[j];
     ++s.ncoll;
@@ -439,7 +474,7 @@ class Engine {
 
   /// Observes the state at time ts (>= every local clock) in the original numbering
   /// (snapshot.hpp).
-  void sample(double ts, Observer& obs) const { observe_state(s_, ts, obs); }
+  void sample(double ts, Observer& obs) const { observe_state(s_, ts, obs, &contacts_); }
 
   ScanState<D, F> s_;        // particles, events, cells, clock, counters (state.hpp) and
                              // the scratch of the scans (prediction.hpp)
@@ -449,6 +484,7 @@ class Engine {
   std::uint64_t reorder_every_ = 0, next_reorder_ = 0;  // renumbering period (collisions)
   bool debug_ = false;
   Config cfg_;
+  mutable tally::ContactSlot contacts_;  // the Helfand tally, if a recorder installed one
 };
 
 }  // namespace hypergas::edmd

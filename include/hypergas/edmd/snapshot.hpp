@@ -22,9 +22,10 @@ namespace hypergas::edmd {
 
 /// Calls obs with the state `s` at time ts (>= every local clock), in the original
 /// numbering (State::slot), positions unwrapped by the periodic image counts. Changes
-/// nothing.
+/// nothing (but `contacts`, the engine's Helfand slot, is handed to obs).
 template <int D, Features F>
-void observe_state(const State<D, F>& s, double ts, Observer& obs) {
+void observe_state(const State<D, F>& s, double ts, Observer& obs,
+                   tally::ContactSlot* contacts = nullptr) {
   const std::size_t n = s.size();
   constexpr int st = 2 * D;
   std::vector<double> rec(n * st);
@@ -43,6 +44,8 @@ void observe_state(const State<D, F>& s, double ts, Observer& obs) {
   snap.velocities = rec.data() + D;
   snap.positions = rec.data();
   snap.time = ts;
+  snap.box = s.L;
+  snap.contacts = contacts;
   snap.collisions = s.ncoll;
   snap.collisions_per_particle = 2.0 * static_cast<double>(s.ncoll) / static_cast<double>(n);
   std::vector<std::uint8_t> species;

@@ -76,8 +76,17 @@ struct TransportCoefficient {
   double rate = 0.0;        ///< fitted decay rate of C (1 / mean collision times)
   double rate_error = 0.0;
   double sonine_rate = 0.0; ///< C(0) / sonine with C(0) of the Maxwellian (1 or (D+2)/2)
+  double enskog = 0.0;      ///< Enskog's value (analysis/enskog.hpp; the dilute gas: sonine)
+  double enskog_ratio = 0.0;
+  double enskog_ratio_error = 0.0;
   std::vector<double> stretches;  ///< the value from each error stretch
 };
+
+/// Writes transport.csv: one row per coefficient, header coefficient, value, error,
+/// first_sonine, ratio, ratio_error, enskog, enskog_ratio, enskog_ratio_error, t_cut, tail,
+/// c0, decay_rate, decay_rate_error, first_sonine_rate (empty where not finite). Both
+/// engines' recorders write it.
+void write_transport_rows(const std::string& path, const std::vector<TransportCoefficient>& rows);
 
 /// The reduced first Sonine values of model `model` ("hs", "maxwell", "vhs" with rate
 /// exponent a) in D dimensions: {eta*, lambda*, D*}. Throws InvalidInput for other models
@@ -101,9 +110,7 @@ class TransportRecorder final : public Observer {
   std::vector<double> normalised(int g) const;
   double dt() const { return set_.dt; }
   double kT() const { return kT_; }
-  /// transport.csv: one row per coefficient (header: coefficient, value, error,
-  /// first_sonine, ratio, ratio_error, t_cut, tail, c0, decay_rate, decay_rate_error,
-  /// first_sonine_rate).
+  /// transport.csv (write_transport_rows; reduced values, Enskog = the first Sonine value).
   void write_transport_csv(const std::string& path) const;
   /// correlations.csv: time and each normalised correlation, with the first Sonine
   /// exponential exp(-t C(0) / sonine) beside each.

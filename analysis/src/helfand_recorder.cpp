@@ -1,0 +1,321 @@
+// Einstein-Helfand and Green-Kubo transport of the EDMD fluid (helfand_recorder.hpp).
+#include "hypergas/analysis/helfand_recorder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "hypergas/analysis/enskog.hpp"
+#include "hypergas/analysis/output.hpp"
+#include "hypergas/error.hpp"
+#include "hypergas/tally/helfand.hpp"
+#include "integrals.hpp"
+
+namespace hypergas::analysis {
+
+namespace {
+
+using detail::increment_value;
+using detail::mean_se;
+using detail::running_integral;
+
+// correlator groups
+enum Group : int {
+  stress_total, stress_kinetic, stress_collisional,
+  heat_total, heat_kinetic, heat_collisional,
+  stress_point, heat_point, velocity, displacement, n_groups
+};
+
+/// Yeh & Hummer's constant of the cubic periodic box (3D).
+constexpr double xi_cubic = 2.837297;
+
+std::vector<int> layout(int d, std::size_t tagged) {
+  const int v = d * (d - 1) / 2 + (d - 1);
+  std::vector<int> g;
+  const auto add = [&](int group, std::size_t count) { g.insert(g.end(), count, group); };
+  add(stress_total, std::size_t(v)), add(stress_kinetic, std::size_t(v));
+  add(stress_collisional, std::size_t(v));
+  add(heat_total, std::size_t(d)), add(heat_kinetic, std::size_t(d));
+  add(heat_collisional, std::size_t(d));
+  add(stress_point, std::size_t(v)), add(heat_point, std::size_t(d));
+  add(velocity, tagged * std::size_t(d)), add(displacement, tagged * std::size_t(d));
+  return g;
+}
+
+std::size_t lag_count(const TransportSettings& s) {
+  const auto k = static_cast<std::size_t>(std::ceil(s.max_lag / s.dt - 1e-9)) + 1;
+  return (k + 15) / 16 * 16;
+}
+
+/// Mean square Helfand moment at every lag n from the interval averages' correlation c:
+/// h^2 (n c(0) + 2 sum_{l=1}^{n-1} (n - l) c(l)).
+std::vector<double> mean_square(const std::vector<double>& c, double h) {
+  std::vector<double> m(c.size(), 0.0);
+  // M(n+1) - M(n) = h^2 (c(0) + 2 sum_{l=1}^{n} c(l))
+  double s = c[0];
+  for (std::size_t n = 1; n < c.size(); ++n) {
+    m[n] = m[n - 1] + h * h * s;
+    s += 2.0 * c[n];
+  }
+  return m;
+}
+
+/// Least-squares slope of y(n h) over n in [a, b].
+double slope(const std::vector<double>& y, double h, std::size_t a, std::size_t b) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
+  for (std::size_t n = a; n <= b && n < y.size(); ++n) {
+    const double x = static_cast<double>(n) * h;
+    sx += x, sy += y[n], sxx += x * x, sxy += x * y[n], m += 1;
+  }
+  if (m < 2) return std::numeric_limits<double>::quiet_NaN();
+  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
+}
+
+}  // namespace
+
+HelfandRecorder::HelfandRecorder(const TransportSettings& s, int dim, std::size_t n,
+                                 double start, double end)
+    : set_(s), dim_(dim), n_(n), start_(start), end_(end) {
+  if (!(dim >= 2 && dim <= 6 && s.tagged >= 1 && s.dt > 0 && s.max_lag > s.dt &&
+        s.error_blocks >= 2 && s.window > 0 && n >= 2 && std::isfinite(start) &&
+        end > start))
+    throw InvalidInput(
+        "helfand: needs D in 2..6, N >= 2, tagged >= 1, dt > 0, max_lag > dt, window > 0, "
+        ">= 2 error blocks and end > start");
+  const std::size_t t = std::min<std::size_t>(std::size_t(s.tagged), n);
+  for (std::size_t k = 0; k < t; ++k) tagged_.push_back(static_cast<std::uint32_t>(k * n / t));
+}
+
+void HelfandRecorder::install(const Snapshot& s) {
+  const auto stride = static_cast<std::size_t>(s.stride);
+  double e2 = 0.0;
+  for (std::size_t i = 0; i < n_; ++i)
+    for (int a = 0; a < dim_; ++a) e2 += s.velocities[i * stride + std::size_t(a)] * s.velocities[i * stride + std::size_t(a)];
+  kT_ = e2 / (dim_ * (static_cast<double>(n_) - 1.0));
+  if (!(s.collisions_per_particle > 0.0 && s.time > 0.0))
+    throw InvalidInput("helfand: no collisions before the recording starts: equilibrate longer");
+  tau_ = s.time / s.collisions_per_particle;
+  h_ = set_.dt * tau_;
+  volume_ = std::pow(s.box, dim_);
+  const std::size_t lags = lag_count(set_);
+  const double span = end_ - s.time;
+  const auto planned = static_cast<std::uint64_t>(std::floor(span / h_ + 1e-9));
+  if (planned < 2 * lags)
+    throw InvalidInput("helfand: the recording (" + std::to_string(span) +
+                       " time units) is shorter than two correlation windows of " +
+                       std::to_string(set_.max_lag * tau_) +
+                       " (the mean free time is " + std::to_string(tau_) + "): run longer");
+  corr_ = std::make_unique<BlockCorrelator>(layout(dim_, tagged_.size()), lags, planned,
+                                            set_.error_blocks);
+  frame_.assign(std::size_t(corr_->series()), 0.0);
+  s.contacts->helfand = std::make_unique<tally::Helfand>(dim_, s.time, h_, s.velocities, n_,
+                                                         s.stride, tagged_);
+  t_first_ = s.time;
+  coll_first_ = s.collisions;
+}
+
+void HelfandRecorder::observe(const Snapshot& s) {
+  if (s.time < start_ - 1e-9 * std::max(1.0, std::fabs(start_))) return;
+  if (!result_.empty()) throw InvalidInput("helfand: observe after finish");
+  if (s.dim != dim_ || s.n != n_)
+    throw InvalidInput("helfand: the snapshot's D or N differs from the recorder's");
+  if (s.species || s.inv_mass)
+    throw InvalidInput("helfand: one species of unit mass only (no --mass-ratio)");
+  if (!s.contacts || !(s.box > 0.0))
+    throw InvalidInput("helfand: the engine keeps no Helfand tally (EDMD only)");
+  if (!s.contacts->helfand) {
+    if (corr_) throw InvalidInput("helfand: the engine lost its tally (a restored engine?)");
+    install(s);
+  }
+  tally::Helfand& H = *s.contacts->helfand;
+  H.close_until(s.time);
+  const std::vector<double> rec = H.take();
+  const int d = dim_, S = H.stress_components();
+  const std::size_t R = std::size_t(H.record_size());
+  const double us = 1.0 / std::sqrt(volume_ * kT_), uq = us / std::sqrt(kT_);
+  for (std::size_t off = 0; off + R <= rec.size(); off += R) {
+    const double* r = rec.data() + off;
+    std::size_t k = 0;
+    // the viscosity channels of a symmetric tensor t (S components, scale u)
+    const auto channels = [&](const double* t, double u) {
+      for (int a = 0; a < d; ++a)
+        for (int b = a + 1; b < d; ++b) frame_[k++] = t[H.stress_index(a, b)] * u;
+      for (int a = 0; a + 1 < d; ++a)
+        frame_[k++] = 0.5 * (t[H.stress_index(a, a)] - t[H.stress_index(a + 1, a + 1)]) * u;
+    };
+    double total[27];
+    for (int c = 0; c < S; ++c)
+      total[c] = r[H.kinetic_stress_at() + c] + r[H.collisional_stress_at() + c];
+    channels(total, us / h_);
+    channels(r + H.kinetic_stress_at(), us / h_);
+    channels(r + H.collisional_stress_at(), us / h_);
+    for (int a = 0; a < d; ++a)
+      frame_[k++] = (r[H.kinetic_heat_at() + a] + r[H.collisional_heat_at() + a]) * uq / h_;
+    for (int a = 0; a < d; ++a) frame_[k++] = r[H.kinetic_heat_at() + a] * uq / h_;
+    for (int a = 0; a < d; ++a) frame_[k++] = r[H.collisional_heat_at() + a] * uq / h_;
+    channels(r + H.point_stress_at(), us);
+    for (int a = 0; a < d; ++a) frame_[k++] = r[H.point_heat_at() + a] * uq;
+    const std::size_t td = tagged_.size() * std::size_t(d);
+    for (std::size_t c = 0; c < td; ++c) frame_[k++] = r[H.point_velocity_at() + int(c)];
+    for (std::size_t c = 0; c < td; ++c) frame_[k++] = r[H.displacement_at() + int(c)] / h_;
+    corr_->push(frame_.data());
+  }
+  H.reset_kinetic(s.velocities, n_, s.stride, s.time);
+  t_last_ = s.time;
+  coll_last_ = s.collisions;
+}
+
+const std::vector<TransportCoefficient>& HelfandRecorder::finish() {
+  if (!result_.empty()) return result_;
+  if (!corr_) throw InvalidInput("helfand: no snapshot reached the recording's start");
+  corr_->finish();
+  if (corr_->frames() < 2 * corr_->lags())
+    throw InvalidInput("helfand: " + std::to_string(corr_->frames()) +
+                       " intervals, fewer than two correlation windows: run longer");
+  const int d = dim_;
+  const double n_density = static_cast<double>(n_) / volume_;
+  const double nu =
+      2.0 * static_cast<double>(coll_last_ - coll_first_) /
+      (static_cast<double>(n_) * (t_last_ - t_first_));
+  chi_ = nu / enskog::boltzmann_rate(d, n_density);
+  phi_ = enskog::packing(d, n_density);
+  const enskog::Parts fe = enskog::viscosity(d, phi_, chi_);
+  const enskog::Parts fl = enskog::conductivity(d, phi_, chi_);
+  const double eta0 = enskog::eta0(d), lam0 = enskog::lambda0(d);
+  const double d0 = enskog::nD0(d) / n_density;
+  const double kT = kT_, h = h_;
+  const int J = corr_->stretches();
+
+  // A row from its value and per-stretch values, with its reference values.
+  const auto row = [&](const char* name, double value, const std::vector<double>& st,
+                       double sonine, double enskog_value, std::size_t cut, double tail,
+                       double c0) {
+    TransportCoefficient r;
+    r.name = name;
+    r.value = value;
+    r.error = mean_se(st).second;
+    r.sonine = sonine;
+    r.ratio = value / sonine;
+    r.ratio_error = r.error / sonine;
+    r.enskog = enskog_value;
+    r.enskog_ratio = value / enskog_value;
+    r.enskog_ratio_error = r.error / enskog_value;
+    r.t_cut = static_cast<double>(cut) * h;
+    r.tail = tail;
+    r.c0 = c0;
+    r.rate = r.rate_error = r.sonine_rate = std::numeric_limits<double>::quiet_NaN();
+    r.stretches = st;
+    result_.push_back(r);
+  };
+
+  // viscosity (scale 1 / kT) and conductivity (1 / kT^2): Helfand, GK, parts, point
+  const auto flux = [&](const char* base, int g_tot, int g_kin, int g_col, int g_pt,
+                        double scale, double ref, const enskog::Parts& f) {
+    const std::vector<double> ck = corr_->mean(g_kin);
+    const std::size_t cut = detail::auto_cut(ck, running_integral(ck, h), h, set_.window);
+    const double g = detail::tail_rate(ck, running_integral(ck, h), cut, h);
+    const std::size_t K = ck.size() - 1;
+    const std::size_t a = std::min(2 * cut, K / 2), b = std::min(4 * cut, K);
+    const auto helfand = [&](const std::vector<double>& c) {
+      return 0.5 * slope(mean_square(c, h), h, a, b) * scale;
+    };
+    const auto gk = [&](const std::vector<double>& c) {
+      return increment_value(c, cut, h, g).first * scale;
+    };
+    const std::vector<double> pt = corr_->mean(g_pt);
+    const auto point = [&](const std::vector<double>& c) {
+      const std::vector<double> I = running_integral(c, h);
+      return detail::cut_value(c, I, cut, h, detail::tail_rate(pt, running_integral(pt, h), cut, h))
+                 .first * scale;
+    };
+    std::vector<double> s_h, s_gk, s_k, s_c, s_x, s_p;
+    for (int j = 0; j < J; ++j) {
+      const auto ct = corr_->stretch_mean(g_tot, j), kk = corr_->stretch_mean(g_kin, j);
+      const auto cc = corr_->stretch_mean(g_col, j);
+      s_h.push_back(helfand(ct));
+      s_gk.push_back(gk(ct));
+      s_k.push_back(gk(kk));
+      s_c.push_back(gk(cc));
+      s_x.push_back(s_gk.back() - s_k.back() - s_c.back());
+      s_p.push_back(point(corr_->stretch_mean(g_pt, j)));
+    }
+    const auto ct = corr_->mean(g_tot), cc = corr_->mean(g_col);
+    const std::string b0 = base;
+    const double tail = increment_value(ct, cut, h, g).second * scale;
+    row(base, helfand(ct), s_h, ref, ref * f.total(), cut, 0.0, ct[0] * scale);
+    row((b0 + "_green_kubo").c_str(), gk(ct), s_gk, ref, ref * f.total(), cut, tail,
+        ct[0] * scale);
+    row((b0 + "_kinetic").c_str(), gk(ck), s_k, ref, ref * f.kinetic, cut,
+        increment_value(ck, cut, h, g).second * scale, ck[0] * scale);
+    row((b0 + "_cross").c_str(), gk(ct) - gk(ck) - gk(cc), s_x, ref, ref * f.cross, cut, 0.0,
+        std::numeric_limits<double>::quiet_NaN());
+    row((b0 + "_collisional").c_str(), gk(cc), s_c, ref, ref * f.collisional, cut,
+        increment_value(cc, cut, h, g).second * scale, cc[0] * scale);
+    row((b0 + "_kinetic_point").c_str(), point(pt), s_p, ref, ref * f.kinetic, cut, 0.0,
+        pt[0] * scale);
+    std::vector<double> norm(ct.size()), msd = mean_square(ct, h), hel(ct.size());
+    for (std::size_t k = 0; k < ct.size(); ++k) {
+      norm[k] = ct[k] / ct[0];
+      hel[k] = k == 0 ? 0.0 : msd[k] * scale / (2.0 * static_cast<double>(k) * h);
+    }
+    curves_.push_back(std::move(norm));
+    curves_.push_back(std::move(hel));
+  };
+  flux("viscosity", stress_total, stress_kinetic, stress_collisional, stress_point, 1.0 / kT,
+       eta0, fe);
+  flux("thermal_conductivity", heat_total, heat_kinetic, heat_collisional, heat_point,
+       1.0 / (kT * kT), lam0, fl);
+
+  // self-diffusion: Green-Kubo of the tagged velocities, Einstein from their displacements
+  {
+    const std::vector<double> cv = corr_->mean(velocity), cd = corr_->mean(displacement);
+    const std::vector<double> Iv = running_integral(cv, h);
+    const std::size_t cut = detail::auto_cut(cv, Iv, h, set_.window);
+    const double gv = detail::tail_rate(cv, Iv, cut, h);
+    const double gd = detail::tail_rate(cd, running_integral(cd, h), cut, h);
+    std::vector<double> s_gk, s_e;
+    for (int j = 0; j < J; ++j) {
+      const auto v = corr_->stretch_mean(velocity, j);
+      s_gk.push_back(detail::cut_value(v, running_integral(v, h), cut, h, gv).first);
+      s_e.push_back(increment_value(corr_->stretch_mean(displacement, j), cut, h, gd).first);
+    }
+    const auto [dgk, tgk] = detail::cut_value(cv, Iv, cut, h, gv);
+    const auto [de, te] = increment_value(cd, cut, h, gd);
+    const double de_ref = d0 * enskog::diffusion(chi_);
+    row("self_diffusion", dgk, s_gk, d0, de_ref, cut, tgk, cv[0]);
+    row("self_diffusion_einstein", de, s_e, d0, de_ref, cut, te, cd[0]);
+    if (d == 3) {  // the periodic box's hydrodynamic correction (Yeh & Hummer)
+      const double eta = result_[0].value, L = std::cbrt(volume_);
+      const double add = xi_cubic * kT / (6.0 * std::numbers::pi * eta * L);
+      std::vector<double> s_yh;
+      for (double x : s_e) s_yh.push_back(x + add);
+      row("self_diffusion_yeh_hummer", de + add, s_yh, d0, de_ref, cut, te, cd[0]);
+    }
+    std::vector<double> norm(cv.size());
+    for (std::size_t k = 0; k < cv.size(); ++k) norm[k] = cv[k] / cv[0];
+    curves_.push_back(std::move(norm));
+  }
+  return result_;
+}
+
+void HelfandRecorder::write_transport_csv(const std::string& path) const {
+  if (result_.empty()) throw InvalidInput("helfand: results before finish()");
+  write_transport_rows(path, result_);
+}
+
+void HelfandRecorder::write_correlations_csv(const std::string& path) const {
+  if (result_.empty()) throw InvalidInput("helfand: results before finish()");
+  std::vector<std::vector<double>> rows;
+  for (std::size_t k = 0; k < curves_[0].size(); ++k) {
+    std::vector<double> row{static_cast<double>(k) * h_};
+    for (const int c : {0, 2, 4, 1, 3}) row.push_back(curves_[std::size_t(c)][k]);
+    rows.push_back(std::move(row));
+  }
+  write_csv(path,
+            {"time", "viscosity", "thermal_conductivity", "self_diffusion", "viscosity_helfand",
+             "thermal_conductivity_helfand"},
+            rows);
+}
+
+}  // namespace hypergas::analysis

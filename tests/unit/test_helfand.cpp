@@ -110,12 +110,16 @@ void check_tally(double packing, std::size_t n) {
       for (int b = a; b < D; ++b) ref[std::size_t(S + m++)] += dp[a] * r[b];
     for (int a = 0; a < D; ++a) ref[std::size_t(2 * S + D + a)] += (ei1 - ei0) * r[a];
     kinetic(after.v, K);
+    v_old = after.v;
   }
   // the tail up to t_end, with the velocities after the last event before it
   {
     const double h = t_end - t;
     for (int m = 0; m < S; ++m) ref[std::size_t(m)] += K[std::size_t(m)] * h;
     for (int a = 0; a < D; ++a) ref[std::size_t(2 * S + a)] += K[std::size_t(S + a)] * h;
+    for (std::size_t k = 0; k < tagged.size(); ++k)
+      for (int a = 0; a < D; ++a)
+        ref[std::size_t(2 * S + 2 * D) + k * D + std::size_t(a)] += v_old[tagged[k] * D + std::size_t(a)] * h;
   }
   c.slot->helfand->close_until(t_end);
   const std::vector<double> rec = c.slot->helfand->take();

@@ -3,9 +3,14 @@
 #   moments.png           kurtosis of v_x and L1 distance of the speeds from MB against time
 #   speed_histogram.png   final speed distribution against Maxwell-Boltzmann
 #   vacf.png              velocity autocorrelation (only with vacf = 1: EDMD runs)
+#   transport.png         flux correlations (transport = 1: DSMC; 2: EDMD, with the running
+#                         Einstein-Helfand values)
+#   structure.png         g(r) and S(k) (structure = 1: EDMD --structure)
 # By hand: cd RUN && gnuplot -e 'vacf = 1' plot_run.gp
 # Reads the CSV files by column name (gnuplot >= 5.0).
 if (!exists('vacf')) vacf = 0
+if (!exists('transport')) transport = 0
+if (!exists('structure')) structure = 0
 set terminal pngcairo size 900,600 font ',11'
 set datafile separator ','
 set key autotitle columnhead
@@ -37,7 +42,7 @@ if (vacf) {
        '' using 'time':(column('vacf') < 0 ? -column('vacf')/c0 : 1/0) with points \
        title 'negative values (abs)'
 }
-if (transport) {
+if (transport == 1) {
   set output 'transport.png'
   set key top right
   set xlabel 'time (mean collision times)'
@@ -51,4 +56,38 @@ if (transport) {
        '' using 'time':'thermal_conductivity_sonine' with lines dt 2 lc 2 title 'first Sonine', \
        '' using 'time':'self_diffusion' with lines lw 2 title 'tagged velocity (self-diffusion)', \
        '' using 'time':'self_diffusion_sonine' with lines dt 2 lc 3 title 'first Sonine'
+}
+if (transport == 2) {
+  set output 'transport.png'
+  set multiplot layout 2,1
+  set key top right
+  set xlabel 'time (sigma sqrt(m/kT))'
+  set ylabel 'C(t) / C(0)'
+  unset logscale x
+  set logscale y
+  set yrange [1e-3:1.2]
+  plot 'correlations.csv' using 'time':'viscosity' with lines lw 2 title 'stress (interval averages)', \
+       '' using 'time':'thermal_conductivity' with lines lw 2 title 'heat flux (interval averages)', \
+       '' using 'time':'self_diffusion' with lines lw 2 title 'tagged velocity'
+  unset logscale y
+  set yrange [*:*]
+  set ylabel 'MSD of Helfand moment / (2 t)'
+  plot 'correlations.csv' using 'time':'viscosity_helfand' with lines lw 2 title 'viscosity', \
+       '' using 'time':'thermal_conductivity_helfand' with lines lw 2 title 'thermal conductivity'
+  unset multiplot
+}
+if (structure) {
+  set output 'structure.png'
+  set multiplot layout 2,1
+  unset logscale xy
+  set yrange [*:*]
+  set key top right
+  set xlabel 'r / sigma'
+  set ylabel 'g(r)'
+  plot 'rdf.csv' using 'r':'g' with lines lw 2 title 'g(r)', 1 with lines dt 2 title ''
+  set xlabel 'k sigma'
+  set ylabel 'S(k)'
+  plot 'structure_factor.csv' using 'k':'S':'error' with yerrorbars pt 7 ps 0.5 title 'S(k)', \
+       1 with lines dt 2 title ''
+  unset multiplot
 }

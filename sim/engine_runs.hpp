@@ -12,6 +12,8 @@
 
 #include "hypergas/analysis/moments_recorder.hpp"
 #include "hypergas/analysis/output.hpp"
+#include "hypergas/analysis/helfand_recorder.hpp"
+#include "hypergas/analysis/structure_recorder.hpp"
 #include "hypergas/analysis/transport_recorder.hpp"
 #include "hypergas/analysis/vacf_recorder.hpp"
 #include "hypergas/conserved.hpp"
@@ -26,6 +28,10 @@ struct RunRecord {
   std::unique_ptr<analysis::VacfRecorder> vacf;   ///< EDMD only (nullptr for DSMC)
   /// DSMC with --transport: the Green-Kubo coefficients, finished (else nullptr)
   std::unique_ptr<analysis::TransportRecorder> transport;
+  /// EDMD with --transport: Einstein-Helfand and Green-Kubo coefficients, finished
+  std::unique_ptr<analysis::HelfandRecorder> helfand;
+  /// EDMD with --structure: g(r) and S(k), finished
+  std::unique_ptr<analysis::StructureRecorder> structure;
   analysis::JsonObject summary;  ///< summary.json: the contract's keys first, then extras
 };
 

@@ -9,8 +9,9 @@
 
 namespace hypergas::cli {
 
-std::string run_plot_script(bool vacf, bool transport) {
-  return fmt::format("vacf = {}\ntransport = {}\n", vacf ? 1 : 0, transport ? 1 : 0) +
+std::string run_plot_script(bool vacf, int transport, bool structure) {
+  return fmt::format("vacf = {}\ntransport = {}\nstructure = {}\n", vacf ? 1 : 0, transport,
+                     structure ? 1 : 0) +
          std::string(embedded::plot_run_gp);
 }
 

@@ -10,9 +10,10 @@ namespace hypergas::cli {
 
 /// Plots of one `hypergas run` folder: moments.png (kurtosis and L1 distance against
 /// time), speed_histogram.png (final speeds against MB), with `vacf` vacf.png and with
-/// `transport` transport.png (the normalised correlations beside their first Sonine
-/// exponentials, from correlations.csv).
-std::string run_plot_script(bool vacf, bool transport = false);
+/// `transport` transport.png (1, DSMC: the normalised correlations beside their first
+/// Sonine exponentials; 2, EDMD: the correlations and the running Einstein-Helfand
+/// values), with `structure` structure.png (g(r) and S(k)).
+std::string run_plot_script(bool vacf, int transport = 0, bool structure = false);
 
 /// Plots of the default scene: relaxation.png (L1 distance from MB against collisions per
 /// particle, every D), kurtosis.png and speed_histograms.png (final state, one panel per D).

@@ -25,9 +25,9 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume) {
   OutputDir out(o.out);
   const bool edmd = o.engine_kind() == registry::EngineKind::edmd;
   RunContext ctx;
-  // no checkpoint, not even at Ctrl-C, for --transport: its correlations are not saved, so
-  // a resumed run would report a part of the run as the whole
-  if (o.replicas == 1 && !o.transport)
+  // no checkpoint, not even at Ctrl-C, for --transport and --structure: their correlations
+  // and frames are not saved, so a resumed run would report a part of the run as the whole
+  if (o.replicas == 1 && !o.transport && !o.structure)
     ctx.checkpoints = Checkpointer(out.dir(), o.checkpoint_every, o.checkpoint_wall_seconds());
   ctx.resume = resume;
   // gnuplot starts now, so that its start overlaps the run (its script follows the CSVs)
@@ -42,7 +42,16 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume) {
     rec.transport->write_transport_csv(out.staged("transport.csv").string());
     rec.transport->write_correlations_csv(out.staged("correlations.csv").string());
   }
-  plot.finish(run_plot_script(rec.vacf && rec.vacf->frames() >= 2, bool(rec.transport)));
+  if (rec.helfand) {
+    rec.helfand->write_transport_csv(out.staged("transport.csv").string());
+    rec.helfand->write_correlations_csv(out.staged("correlations.csv").string());
+  }
+  if (rec.structure) {
+    rec.structure->write_rdf_csv(out.staged("rdf.csv").string());
+    rec.structure->write_structure_factor_csv(out.staged("structure_factor.csv").string());
+  }
+  plot.finish(run_plot_script(rec.vacf && rec.vacf->frames() >= 2,
+                              rec.transport ? 1 : rec.helfand ? 2 : 0, bool(rec.structure)));
   rec.summary.emplace_back(
       "output_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   const analysis::JsonObject& summary = rec.summary;
@@ -65,6 +74,16 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume) {
     for (const auto& c : rec.transport->finish())
       fmt::print("  {} {:.5g} +- {:.2g} (reduced), first Sonine {:.5g}, ratio {:.5f} +- {:.5f}\n",
                  c.name, c.value, c.error, c.sonine, c.ratio, c.ratio_error);
+  if (rec.helfand)
+    for (const auto& c : rec.helfand->finish())
+      fmt::print("  {} {:.5g} +- {:.2g}, over first Sonine {:.5f} +- {:.5f}, over Enskog "
+                 "{:.5f} +- {:.5f}\n",
+                 c.name, c.value, c.error, c.ratio, c.ratio_error, c.enskog_ratio,
+                 c.enskog_ratio_error);
+  if (rec.structure)
+    fmt::print("  g(sigma+) {:.5g} +- {:.2g} from the rdf (contact theorem from Z: {})\n",
+               rec.structure->finish().contact, rec.structure->finish().contact_error,
+               f("contact_value_from_Z"));
   if (edmd)
     fmt::print("  packing {}, Z = PV/NkT {}, collision rate {}, mean free time {}\n",
                f("packing"), f("Z"), f("collision_rate"), f("mean_free_time"));

@@ -41,7 +41,24 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress, RunCo
   Conserved<D> c0;
   std::optional<Engine> e;
   Engine& engine = start_engine(e, cfg, ctx, st, c0, rec.moments, vacf);
-  RunObserver obs({&rec.moments, &vacf}, "edmd", until, progress);
+  std::vector<Observer*> targets{&rec.moments, &vacf};
+  if (o.transport) {
+    analysis::TransportSettings ts;
+    ts.dt = o.correlation_dt;
+    ts.max_lag = o.correlation_time;
+    ts.tagged = o.tagged;
+    rec.helfand = std::make_unique<analysis::HelfandRecorder>(ts, D, cfg.n, t_eq, until);
+    targets.push_back(rec.helfand.get());
+  }
+  if (o.structure) {
+    analysis::StructureSettings ss;
+    ss.r_max = o.rdf_max;
+    ss.k_max = o.k_max;
+    ss.seed = o.seed;
+    rec.structure = std::make_unique<analysis::StructureRecorder>(ss, D, cfg.n, t_eq);
+    targets.push_back(rec.structure.get());
+  }
+  RunObserver obs(std::move(targets), "edmd", until, progress);
   const auto save = [&](checkpoint::Writer& w) {
     save_run(w, o, st, c0, engine, rec.moments, vacf);
   };
@@ -53,6 +70,10 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress, RunCo
   const double engine_s = st.engine_s;
   const auto coll = static_cast<std::int64_t>(engine.collisions());
   const auto last = [&](const char* col) { return rec.moments.column(col).back(); };
+  const auto ta = Clock::now();
+  if (rec.helfand) rec.helfand->finish();
+  if (rec.structure) rec.structure->finish();
+  st.analysis_s += std::chrono::duration<double>(Clock::now() - ta).count();
   rec.summary = analysis::JsonObject{
       {"dim", std::int64_t{D}},
       {"engine", std::string(registry::name(registry::EngineKind::edmd))},
@@ -85,7 +106,20 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress, RunCo
       {"peak_rss_bytes_per_particle", peak_rss_bytes() / static_cast<double>(o.n)},
       {"checkpoints", static_cast<std::int64_t>(st.checkpoints)},
       {"resumes", static_cast<std::int64_t>(st.resumes)},
+      {"contact_value_from_Z", edmd::contact_value(D, engine.pressure_Z(), engine.packing())},
   };
+  if (rec.structure) {
+    rec.summary.emplace_back("contact_value_rdf", rec.structure->finish().contact);
+    rec.summary.emplace_back("contact_value_rdf_error", rec.structure->finish().contact_error);
+  }
+  if (rec.helfand) {
+    rec.summary.emplace_back("transport_mean_free_time", rec.helfand->mean_free_time());
+    rec.summary.emplace_back("transport_chi", rec.helfand->chi());
+    for (const auto& c : rec.helfand->finish()) {
+      rec.summary.emplace_back(c.name, c.value);
+      rec.summary.emplace_back(c.name + "_error", c.error);
+    }
+  }
   return rec;
 }
 

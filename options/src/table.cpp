@@ -19,7 +19,9 @@ using R = RunOptions;
 
 constexpr std::string_view time_unit =
     "dsmc: equilibrium mean collision times; edmd: sigma sqrt(m/kT)";
-constexpr std::string_view dsmc_time_unit = "equilibrium mean collision times";
+constexpr std::string_view mean_free_time_unit =
+    "dsmc: equilibrium mean collision times; edmd: mean free times measured in the "
+    "equilibration";
 
 void check_engine(std::string_view v) { (void)registry::engine(v); }
 void check_model(std::string_view v) { (void)registry::model(v); }
@@ -62,10 +64,13 @@ const Option table[] = {
   {"replicas", 0, E::dsmc, U::command, &R::replicas, {1, 64, false, false, "in 1..64"}, nullptr, nullptr, "", "run K independent copies (files from copy 0, which keeps --seed; summary adds totals and replica error bars)", "", false, false},
   {"checkpoint-every", 0, E::both, U::command, &R::checkpoint_every, {pos_open, 1e308, true, false, "a finite time > 0"}, nullptr, nullptr, time_unit, "write OUT/checkpoint.hgck at the first sampling time after every T time units; continue a stopped run with `hypergas resume OUT`. Ctrl-C always writes one and stops", "off", false, false},
   {"checkpoint-wall", 0, E::both, U::command, &R::checkpoint_wall, {}, check_duration, nullptr, "", "also write a checkpoint after this much wall time, e.g. 90s, 10min, 2h", "off", false, false},
-  {"transport", 0, E::dsmc, U::command, &R::transport, {}, nullptr, nullptr, "", "also measure viscosity, thermal conductivity and self-diffusion by Green-Kubo from equilibrium fluctuations after t = 20 (transport.csv, correlations.csv, transport.png); one species, D >= 2, one thread, no checkpoints (Ctrl-C stops it without output); run long: errors fall as 1/sqrt(until), not with n, and the values carry O(1/N) terms (docs/validation.md)", "", false, false},
-  {"correlation-dt", 0, E::dsmc, U::command, &R::correlation_dt, {pos_open, 1, true, false, "a finite interval > 0 and at most 1"}, nullptr, nullptr, dsmc_time_unit, "with --transport: sampling interval of the fluxes (rounded to divide the --every interval)", "", false, false},
-  {"correlation-time", 0, E::dsmc, U::command, &R::correlation_time, {pos_open, 1e4, true, false, "a finite time > 0 and at most 1e4"}, nullptr, nullptr, dsmc_time_unit, "with --transport: longest lag of the correlation functions", "", false, false},
-  {"tagged", 0, E::dsmc, U::command, &R::tagged, {1, 4096, false, false, "in 1..4096"}, nullptr, nullptr, "", "with --transport: tagged particles whose velocity autocorrelation gives self-diffusion", "", false, false},
+  {"transport", 0, E::both, U::command, &R::transport, {}, nullptr, nullptr, "", "also measure viscosity, thermal conductivity and self-diffusion from equilibrium fluctuations (transport.csv, correlations.csv, transport.png); dsmc: Green-Kubo after t = 20; edmd: Einstein-Helfand and Green-Kubo with kinetic and collisional parts, after the equilibration, against Enskog; one species, D >= 2, no checkpoints (Ctrl-C stops it without output); run long: errors fall as 1/sqrt(until), and the values carry O(1/N) terms (docs/validation.md)", "", false, false},
+  {"correlation-dt", 0, E::both, U::command, &R::correlation_dt, {pos_open, 1, true, false, "a finite interval > 0 and at most 1"}, nullptr, nullptr, mean_free_time_unit, "with --transport: sampling interval of the fluxes (dsmc: rounded to divide the --every interval)", "", false, false},
+  {"correlation-time", 0, E::both, U::command, &R::correlation_time, {pos_open, 1e4, true, false, "a finite time > 0 and at most 1e4"}, nullptr, nullptr, mean_free_time_unit, "with --transport: longest lag of the correlation functions", "", false, false},
+  {"tagged", 0, E::both, U::command, &R::tagged, {1, 4096, false, false, "in 1..4096"}, nullptr, nullptr, "", "with --transport: tagged particles whose velocity autocorrelation gives self-diffusion", "", false, false},
+  {"structure", 0, E::edmd, U::command, &R::structure, {}, nullptr, nullptr, "", "also measure the radial distribution function g(r) with its contact value and the structure factor S(k) at the snapshots after the equilibration (rdf.csv, structure_factor.csv, structure.png)", "", false, false},
+  {"rdf-max", 0, E::edmd, U::command, &R::rdf_max, {1.1, 1e4, false, false, "a finite length in [1.1, 1e4]"}, nullptr, nullptr, "sigma", "with --structure: largest r of g(r) (at most half the box side)", "", false, false},
+  {"k-max", 0, E::edmd, U::command, &R::k_max, {pos_open, 1e3, true, false, "a finite wave number > 0 and at most 1e3"}, nullptr, nullptr, "1/sigma", "with --structure: largest |k| of S(k)", "", false, false},
 };
 // clang-format on
 
@@ -155,6 +160,9 @@ RunOptions defaults(registry::EngineKind e) {
   o.correlation_dt = 0.05;
   o.correlation_time = 40.0;
   o.tagged = 32;
+  o.structure = false;
+  o.rdf_max = 5.0;
+  o.k_max = 15.0;
   return o;
 }
 

@@ -162,6 +162,9 @@ void validate_transport(const RunOptions& o) {
   if (o.correlation_time < 4.0 * o.correlation_dt)
     bad(fmt::format("--correlation-time {} must be at least 4 --correlation-dt ({})",
                     o.correlation_time, o.correlation_dt));
+  // EDMD: the grid is in mean free times, measured in the equilibration, so the run's
+  // length in them is checked when the recording starts (HelfandRecorder)
+  if (o.engine_kind() == registry::EngineKind::edmd) return;
   const double span = o.until - transport_warmup;
   if (span < 10.0 * o.correlation_time)
     bad(fmt::format("--transport samples from t = {} on and needs --until >= {} + 10 "
@@ -196,6 +199,12 @@ void validate(const RunOptions& o) {
   if ((o.checkpoint_every > 0.0 || !o.checkpoint_wall.empty()) && o.replicas != 1)
     bad("--checkpoint-every and --checkpoint-wall need --replicas 1 (one system)");
   validate_transport(o);
+  if (!o.structure)
+    for (const char* k : {"--rdf-max", "--k-max"})
+      if (o.was_given(k)) bad(fmt::format("{} applies with --structure only", k));
+  if (o.structure && (o.checkpoint_every > 0.0 || !o.checkpoint_wall.empty()))
+    bad("--structure runs cannot be checkpointed: leave out --checkpoint-every and "
+        "--checkpoint-wall");
   if (edmd) {
     const double jam = jamming_packing(o.dim);
     if (o.packing >= jam)

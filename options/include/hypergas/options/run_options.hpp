@@ -41,10 +41,13 @@ struct RunOptions {
   int replicas = 0;            ///< DSMC: independent copies (seeds derived from seed)
   double checkpoint_every = 0.0;  ///< checkpoint every this much engine time (0 = off)
   std::string checkpoint_wall;    ///< checkpoint every this much wall time ("90s", "10min")
-  bool transport = false;         ///< DSMC: Green-Kubo transport coefficients
+  bool transport = false;         ///< transport coefficients (both engines)
   double correlation_dt = 0.0;    ///< their sampling interval
   double correlation_time = 0.0;  ///< their longest lag
   int tagged = 0;                 ///< their tagged particles (self-diffusion)
+  bool structure = false;         ///< EDMD: g(r) and S(k)
+  double rdf_max = 0.0;           ///< largest r of g(r) (sigma)
+  double k_max = 0.0;             ///< largest |k| of S(k) (1/sigma)
   std::vector<std::string> given;  ///< options set explicitly, as "--name", in order
 
   /// Whether option `name` ("--packing") was set explicitly.

@@ -183,24 +183,65 @@ void StructureRecorder::observe(const Snapshot& s) {
       }
   }
   frames_g_.push_back(std::move(counts));
-  // S(k): direct sums over the particles
-  std::vector<double> sk(kvec_.size(), 0.0);
-  const double k1 = 2.0 * std::numbers::pi / L;
-  for (std::size_t sh = 0; sh < kvec_.size(); ++sh) {
-    const std::vector<int>& vs = kvec_[sh];
-    const std::size_t nv = vs.size() / std::size_t(d);
-    double acc = 0.0;
-    for (std::size_t v = 0; v < nv; ++v) {
-      double re = 0, im = 0;
-      for (std::size_t i = 0; i < n_; ++i) {
-        double ph = 0;
-        for (int a = 0; a < d; ++a)
-          ph += vs[v * std::size_t(d) + std::size_t(a)] * x[i * std::size_t(d) + std::size_t(a)];
-        ph *= k1;
-        re += std::cos(ph), im += std::sin(ph);
+  // S(k): direct sums over the particles, exp(i k . x) as a product over the axes of
+  // powers of exp(i 2 pi x_a / L), tabulated for a chunk of particles at a time
+  const std::size_t shells = kvec_.size();
+  std::size_t nv_all = 0;
+  int mmax = 0;
+  for (const auto& vs : kvec_) {
+    nv_all += vs.size() / std::size_t(d);
+    for (int c : vs) mmax = std::max(mmax, std::abs(c));
+  }
+  std::vector<double> re(nv_all, 0.0), im(nv_all, 0.0);
+  constexpr std::size_t chunk = 256;
+  const std::size_t W = std::size_t(mmax) + 1;
+  std::vector<double> tc(chunk * std::size_t(d) * W), ts(tc.size());  // cos, sin of j theta
+  for (std::size_t i0 = 0; i0 < n_; i0 += chunk) {
+    const std::size_t i1 = std::min(n_, i0 + chunk);
+    for (std::size_t i = i0; i < i1; ++i)
+      for (int a = 0; a < d; ++a) {
+        const double th = 2.0 * std::numbers::pi * x[i * std::size_t(d) + std::size_t(a)] / L;
+        const double c1 = std::cos(th), s1 = std::sin(th);
+        double* C = &tc[((i - i0) * std::size_t(d) + std::size_t(a)) * W];
+        double* S = &ts[((i - i0) * std::size_t(d) + std::size_t(a)) * W];
+        C[0] = 1.0, S[0] = 0.0;
+        for (std::size_t j = 1; j < W; ++j) {
+          // exact angles every 16 steps keep the recurrence's round-off small
+          if (j % 16 == 0) {
+            C[j] = std::cos(double(j) * th), S[j] = std::sin(double(j) * th);
+          } else {
+            C[j] = C[j - 1] * c1 - S[j - 1] * s1, S[j] = S[j - 1] * c1 + C[j - 1] * s1;
+          }
+        }
       }
-      acc += (re * re + im * im) / static_cast<double>(n_);
+    std::size_t v_all = 0;
+    for (const auto& vs : kvec_) {
+      const std::size_t nv = vs.size() / std::size_t(d);
+      for (std::size_t v = 0; v < nv; ++v, ++v_all) {
+        const int* m = &vs[v * std::size_t(d)];
+        double sr = 0, si = 0;
+        for (std::size_t i = i0; i < i1; ++i) {
+          double pr = 1.0, pi = 0.0;
+          for (int a = 0; a < d; ++a) {
+            const std::size_t base = ((i - i0) * std::size_t(d) + std::size_t(a)) * W;
+            const int ma = m[a];
+            const double c = tc[base + std::size_t(std::abs(ma))];
+            const double sn = ma < 0 ? -ts[base + std::size_t(-ma)] : ts[base + std::size_t(ma)];
+            const double nr = pr * c - pi * sn;
+            pi = pr * sn + pi * c, pr = nr;
+          }
+          sr += pr, si += pi;
+        }
+        re[v_all] += sr, im[v_all] += si;
+      }
     }
+  }
+  std::vector<double> sk(shells, 0.0);
+  for (std::size_t sh = 0, v_all = 0; sh < shells; ++sh) {
+    const std::size_t nv = kvec_[sh].size() / std::size_t(d);
+    double acc = 0.0;
+    for (std::size_t v = 0; v < nv; ++v, ++v_all)
+      acc += (re[v_all] * re[v_all] + im[v_all] * im[v_all]) / static_cast<double>(n_);
     sk[sh] = nv ? acc / static_cast<double>(nv) : 0.0;
   }
   frames_s_.push_back(std::move(sk));

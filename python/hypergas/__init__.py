@@ -37,7 +37,7 @@ except ImportError:
 from ._engines import DSMC, EDMD
 from ._analysis import (Analysis, Report, SpeedHistogram, analyse, maxwell_cdf, maxwell_pdf, msd,
                         report, vacf, MomentsRecorder, VacfRecorder,
-                        TransportRecorder)
+                        TransportRecorder, HelfandRecorder, StructureRecorder)
 from . import _hypergas
 
 models = tuple(_hypergas.model_names())
@@ -47,5 +47,5 @@ jamming_packing = _hypergas.jamming_packing
 
 __all__ = ["DSMC", "EDMD", "Analysis", "Report", "SpeedHistogram", "analyse", "maxwell_pdf",
            "maxwell_cdf", "vacf", "msd", "report", "MomentsRecorder", "VacfRecorder",
-           "TransportRecorder",
+           "TransportRecorder", "HelfandRecorder", "StructureRecorder",
            "models", "initial_states", "schemes", "jamming_packing"]

@@ -58,6 +58,31 @@ correlation C(t)/C(0) of group g (0, 1, 2) on the grid t = k dt; ``write_transpo
 """
 
 
+HelfandRecorder = _hypergas.HelfandRecorder
+HelfandRecorder.__doc__ = """Viscosity, thermal conductivity and self-diffusion of an EDMD fluid.
+
+HelfandRecorder(dim, n, start, end, dt=0.05, max_lag=40, tagged=32, window=3) is what
+``hypergas run --engine edmd --transport`` uses: give it to a one-species ``EDMD`` of the
+same dim and n, observed from ``start`` to ``end`` (engine time; every observation drains
+the fluxes, so the spacing of observations is free). At its first observation it measures
+the mean free time tau so far and installs the Helfand moments in the engine; dt and max_lag
+are in units of tau. ``finish()`` returns {name: {value, error, first_sonine, ratio,
+enskog, enskog_ratio, ...}} for viscosity (Einstein-Helfand), viscosity_green_kubo,
+viscosity_kinetic, _cross, _collisional, _kinetic_point, the same for
+thermal_conductivity, self_diffusion, self_diffusion_einstein (and in 3D
+self_diffusion_yeh_hummer), in units sigma = m = kT = 1 (docs/validation.md).
+"""
+
+StructureRecorder = _hypergas.StructureRecorder
+StructureRecorder.__doc__ = """Radial distribution function and structure factor of an EDMD fluid.
+
+StructureRecorder(dim, n, start=0, r_max=5, dr=0.02, k_max=15, vectors_per_shell=24,
+seed=1) records every observation at or after ``start``. ``finish()`` returns a dict of
+numpy arrays r, g, g_error (g(r) at the bins' mean radii), k, S, S_error (shells of the
+box's wave vectors), and contact, contact_error (g(sigma+)), r_max, frames.
+"""
+
+
 @dataclasses.dataclass(frozen=True)
 class SpeedHistogram:
     """Speed histogram against the D-dimensional Maxwell-Boltzmann density at kT.

@@ -22,7 +22,8 @@ class _Engine:
     def run(self, until, every=None, callback=None, observers=(), progress=False):
         """Advances the gas to time ``until`` and returns the engine.
 
-        With ``observers`` (MomentsRecorder, VacfRecorder, TransportRecorder) or a ``callback`` (called as
+        With ``observers`` (MomentsRecorder, VacfRecorder, TransportRecorder, HelfandRecorder,
+        StructureRecorder) or a ``callback`` (called as
         ``callback(engine)``), they are called at the instants of ``hypergas run --every``:
         K + 1 evenly spaced times from t0 (the time at the call) to ``until``, K =
         round((until - t0) / every) (at least 1; 50 without ``every``), so ``every`` is
@@ -45,8 +46,9 @@ class _Engine:
         observers = tuple(observers)
         for o in observers:
             if not isinstance(o, _hypergas.Observer):
-                raise TypeError("observers must be MomentsRecorder, VacfRecorder or "
-                                "TransportRecorder objects, "
+                raise TypeError("observers must be MomentsRecorder, VacfRecorder, "
+                                "TransportRecorder, HelfandRecorder or StructureRecorder "
+                                "objects, "
                                 f"got {type(o).__name__}")
         if callback is not None and not callable(callback):
             raise TypeError(f"callback must be callable, got {type(callback).__name__}")

@@ -1,6 +1,7 @@
 // python/src/bind_observers.cpp -- the command's recorders as Python observers: Observer,
-// MomentsRecorder (the rows of moments.csv, histograms), VacfRecorder and TransportRecorder
-// (Green-Kubo coefficients, transport.csv).
+// MomentsRecorder (the rows of moments.csv, histograms), VacfRecorder, TransportRecorder
+// (Green-Kubo coefficients, transport.csv), and for EDMD HelfandRecorder (Einstein-Helfand
+// transport) and StructureRecorder (g(r), S(k)).
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -14,9 +15,11 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "convert.hpp"
+#include "hypergas/analysis/helfand_recorder.hpp"
 #include "hypergas/analysis/histogram.hpp"
 #include "hypergas/analysis/maxwell.hpp"
 #include "hypergas/analysis/moments_recorder.hpp"
+#include "hypergas/analysis/structure_recorder.hpp"
 #include "hypergas/analysis/transport_recorder.hpp"
 #include "hypergas/analysis/vacf_recorder.hpp"
 #include "hypergas/error.hpp"
@@ -180,6 +183,87 @@ void bind_observers(py::module_& m) {
            py::arg("path"))
       .def("write_correlations_csv", &analysis::TransportRecorder::write_correlations_csv,
            py::arg("path"));
+
+  py::class_<analysis::HelfandRecorder, Observer>(m, "HelfandRecorder")
+      .def(py::init([](const py::object& dim, const py::object& n, double start, double end,
+                       double dt, double max_lag, const py::object& tagged, double window) {
+             const long long d = as_integer("dim", dim), nn = as_integer("n", n);
+             const long long t = as_integer("tagged", tagged);
+             options::check_dim(static_cast<int>(d), "dim");
+             options::check_n(nn, "n");
+             if (!(std::isfinite(dt) && dt > 0.0 && dt <= 1.0))
+               throw InvalidInput("dt must be finite, > 0 and at most 1 (mean free times)");
+             if (!(std::isfinite(max_lag) && max_lag >= 4.0 * dt && max_lag <= 1e4))
+               throw InvalidInput("max_lag must be at least 4 dt and at most 1e4");
+             if (t < 1 || t > 4096) throw InvalidInput("tagged must be in 1..4096");
+             if (!(std::isfinite(window) && window > 0.0))
+               throw InvalidInput("window must be finite and > 0");
+             analysis::TransportSettings ts;
+             ts.dt = dt, ts.max_lag = max_lag, ts.tagged = static_cast<int>(t);
+             ts.window = window;
+             return std::make_unique<analysis::HelfandRecorder>(
+                 ts, static_cast<int>(d), static_cast<std::size_t>(nn), start, end);
+           }),
+           py::arg("dim"), py::arg("n"), py::arg("start"), py::arg("end"), py::arg("dt") = 0.05,
+           py::arg("max_lag") = 40.0, py::arg("tagged") = 32, py::arg("window") = 3.0)
+      .def_property_readonly("frames", &analysis::HelfandRecorder::frames)
+      .def_property_readonly("dt", &analysis::HelfandRecorder::dt)
+      .def_property_readonly("mean_free_time", &analysis::HelfandRecorder::mean_free_time)
+      .def_property_readonly("kT", &analysis::HelfandRecorder::kT)
+      .def_property_readonly("chi", &analysis::HelfandRecorder::chi)
+      .def_property_readonly("packing", &analysis::HelfandRecorder::packing)
+      .def("finish",
+           [](analysis::HelfandRecorder& r) {
+             py::dict out;
+             for (const auto& c : r.finish()) {
+               py::dict d;
+               d["value"] = c.value, d["error"] = c.error, d["first_sonine"] = c.sonine;
+               d["ratio"] = c.ratio, d["ratio_error"] = c.ratio_error, d["enskog"] = c.enskog;
+               d["enskog_ratio"] = c.enskog_ratio, d["enskog_ratio_error"] = c.enskog_ratio_error;
+               d["t_cut"] = c.t_cut, d["tail"] = c.tail, d["c0"] = c.c0;
+               d["stretches"] = to_numpy(c.stretches);
+               out[py::str(c.name)] = d;
+             }
+             return out;
+           })
+      .def("write_transport_csv", &analysis::HelfandRecorder::write_transport_csv,
+           py::arg("path"))
+      .def("write_correlations_csv", &analysis::HelfandRecorder::write_correlations_csv,
+           py::arg("path"));
+
+  py::class_<analysis::StructureRecorder, Observer>(m, "StructureRecorder")
+      .def(py::init([](const py::object& dim, const py::object& n, double start, double r_max,
+                       double dr, double k_max, const py::object& vectors_per_shell,
+                       const py::object& seed) {
+             const long long d = as_integer("dim", dim), nn = as_integer("n", n);
+             options::check_dim(static_cast<int>(d), "dim");
+             options::check_n(nn, "n");
+             analysis::StructureSettings ss;
+             ss.r_max = r_max, ss.dr = dr, ss.k_max = k_max;
+             const long long v = as_integer("vectors_per_shell", vectors_per_shell);
+             if (v < 1 || v > 100000) throw InvalidInput("vectors_per_shell must be in 1..1e5");
+             ss.vectors_per_shell = static_cast<int>(v);
+             ss.seed = as_seed(seed);
+             return std::make_unique<analysis::StructureRecorder>(
+                 ss, static_cast<int>(d), static_cast<std::size_t>(nn), start);
+           }),
+           py::arg("dim"), py::arg("n"), py::arg("start") = 0.0, py::arg("r_max") = 5.0,
+           py::arg("dr") = 0.02, py::arg("k_max") = 15.0, py::arg("vectors_per_shell") = 24,
+           py::arg("seed") = 1)
+      .def_property_readonly("frames", &analysis::StructureRecorder::frames)
+      .def("finish",
+           [](analysis::StructureRecorder& r) {
+             const analysis::StructureResult& s = r.finish();
+             py::dict out;
+             out["r"] = to_numpy(s.r), out["g"] = to_numpy(s.g), out["g_error"] = to_numpy(s.g_error);
+             out["k"] = to_numpy(s.k), out["S"] = to_numpy(s.s), out["S_error"] = to_numpy(s.s_error);
+             out["contact"] = s.contact, out["contact_error"] = s.contact_error;
+             out["r_max"] = s.r_max, out["frames"] = s.frames;
+             return out;
+           })
+      .def("write_rdf_csv", &analysis::StructureRecorder::write_rdf_csv, py::arg("path"))
+      .def("write_structure_factor_csv",
+           &analysis::StructureRecorder::write_structure_factor_csv, py::arg("path"));
 }
 
 }  // namespace hypergas::python

@@ -145,3 +145,42 @@ def test_transport_recorder_bad_input():
     rec = hg.TransportRecorder(3, 200, 1000.0, warmup=0.0)
     with pytest.raises(ValueError):
         gas.run(1.0, every=0.05, observers=[rec])
+
+
+def test_edmd_structure_and_transport_recorders():
+    # 3D at eta = 0.3: the contact value from the rdf equals the contact theorem's from Z
+    # (errors from 16 stretches: 5 se plus the 0.5 % extrapolation bound, as the C++ test),
+    # and the Helfand and Green-Kubo viscosities of the same run agree within their errors
+    gas = hg.EDMD(dim=3, n=500, packing=0.3, seed=4)
+    gas.run(10.0)
+    z0 = gas.pressure_Z
+    st = hg.StructureRecorder(3, 500, start=10.0, r_max=2.5, k_max=4.0)
+    tr = hg.HelfandRecorder(3, 500, 10.0, 300.0, max_lag=20.0)
+    gas.run(300.0, every=0.5, observers=[st, tr])
+    s = st.finish()
+    assert s["frames"] == 581
+    assert s["g"].shape == s["r"].shape == s["g_error"].shape
+    c = 4 * 0.3
+    z = 1 + c * s["contact"]
+    assert z0 > 1.0
+    assert abs(gas.pressure_Z - z) <= c * (5 * s["contact_error"] + 0.005 * s["contact"])
+    t = tr.finish()
+    assert tr.chi == pytest.approx(s["contact"], rel=0.05)
+    v, g = t["viscosity"], t["viscosity_green_kubo"]
+    assert abs(v["value"] - g["value"]) < 4 * max(v["error"], g["error"])
+    assert v["stretches"].shape == (32,)
+    assert t["self_diffusion"]["enskog"] > 0
+
+
+def test_edmd_recorders_bad_input():
+    with pytest.raises(ValueError):
+        hg.HelfandRecorder(1, 100, 0.0, 100.0)
+    with pytest.raises(ValueError):
+        hg.HelfandRecorder(3, 100, 10.0, 5.0)  # end before start
+    with pytest.raises(ValueError):
+        hg.StructureRecorder(3, 100, r_max=0.5)
+    gas = hg.EDMD(dim=3, n=200, packing=0.2, seed=1)
+    gas.run(2.0)
+    rec = hg.HelfandRecorder(3, 200, 2.0, 4.0)  # far shorter than two correlation windows
+    with pytest.raises(ValueError):
+        gas.run(4.0, every=0.5, observers=[rec])

@@ -183,7 +183,27 @@ TEST_CASE("run --transport: what it cannot measure is rejected", "[cli]") {
   expect_rejected(with({"--correlation-dt", "0"}), "--correlation-dt must be");
   expect_rejected(with({"--tagged", "0"}), "--tagged must be in 1..4096");
   expect_rejected({"run", "--tagged", "8"}, "--tagged applies with --transport only");
-  expect_rejected({"run", "--engine", "edmd", "--transport"},
-                  "--transport applies to --engine dsmc only");
+}
+
+TEST_CASE("run --engine edmd --transport and --structure: bad combinations are rejected",
+          "[cli]") {
+  const std::vector<std::string> ok{"run", "--engine", "edmd", "--until", "100"};
+  const auto with = [&](std::vector<std::string> extra) {
+    auto a = ok;
+    a.insert(a.end(), extra.begin(), extra.end());
+    return a;
+  };
+  expect_rejected(with({"--transport", "--mass-ratio", "2"}), "one-species gas");
+  expect_rejected(with({"--transport", "--checkpoint-every", "10"}), "cannot be checkpointed");
+  expect_rejected(with({"--structure", "--checkpoint-wall", "1h"}), "cannot be checkpointed");
+  expect_rejected(with({"--rdf-max", "3"}), "--rdf-max applies with --structure only");
+  expect_rejected(with({"--k-max", "3"}), "--k-max applies with --structure only");
+  expect_rejected(with({"--structure", "--rdf-max", "1"}), "--rdf-max must be");
+  expect_rejected(with({"--structure", "--k-max", "nan"}), "--k-max");
+  expect_rejected({"run", "--structure"}, "--structure applies to --engine edmd only");
+  // the recording's length in mean free times is known once the run has measured them:
+  // a run too short for two correlation windows stops with a message and writes nothing
+  expect_rejected({"run", "--engine", "edmd", "--transport", "--until", "5"},
+                  "shorter than two correlation windows");
 }
 #endif

@@ -187,8 +187,8 @@ TEST_CASE("run --transport writes transport.csv, correlations.csv and transport.
   INFO("stderr: " << r.err << "\nstdout: " << r.out);
   REQUIRE(r.code == 0);
   CHECK(header(out / "transport.csv") ==
-        "coefficient,value,error,first_sonine,ratio,ratio_error,t_cut,tail,c0,decay_rate,"
-        "decay_rate_error,first_sonine_rate");
+        "coefficient,value,error,first_sonine,ratio,ratio_error,enskog,enskog_ratio,"
+        "enskog_ratio_error,t_cut,tail,c0,decay_rate,decay_rate_error,first_sonine_rate");
   const auto rows = cli_test::lines(cli_test::slurp(out / "transport.csv"));
   REQUIRE(rows.size() == 5);
   CHECK(starts_with(rows[1], "viscosity,"));
@@ -202,5 +202,37 @@ TEST_CASE("run --transport writes transport.csv, correlations.csv and transport.
   check_summary_keys(cli_test::slurp(out / "summary.json"),
                      {"viscosity", "viscosity_error", "viscosity_ratio", "thermal_conductivity",
                       "self_diffusion_ratio_error", "transport_samples"});
+}
+
+TEST_CASE("run --engine edmd --transport --structure writes its files", "[cli]") {
+  Scratch s("edmd_transport");
+  const auto out = s.path() / "out";
+  const auto r = cli_test::run({"run", "--engine", "edmd", "--dim", "3", "--packing", "0.3",
+                                "--n", "300", "--until", "60", "--transport", "--structure",
+                                "--correlation-time", "10", "--rdf-max", "3", "--k-max", "5",
+                                "--seed", "3", "--out", out.string(), "--json"},
+                               s.path());
+  INFO("stderr: " << r.err << "\nstdout: " << r.out);
+  REQUIRE(r.code == 0);
+  CHECK(header(out / "transport.csv") ==
+        "coefficient,value,error,first_sonine,ratio,ratio_error,enskog,enskog_ratio,"
+        "enskog_ratio_error,t_cut,tail,c0,decay_rate,decay_rate_error,first_sonine_rate");
+  const auto rows = cli_test::lines(cli_test::slurp(out / "transport.csv"));
+  REQUIRE(rows.size() == 1 + 12 + 3);
+  CHECK(starts_with(rows[1], "viscosity,"));
+  CHECK(starts_with(rows[7], "thermal_conductivity,"));
+  CHECK(starts_with(rows[15], "self_diffusion_yeh_hummer,"));
+  CHECK(header(out / "correlations.csv") ==
+        "time,viscosity,thermal_conductivity,self_diffusion,viscosity_helfand,"
+        "thermal_conductivity_helfand");
+  CHECK(header(out / "rdf.csv") == "r,g,error");
+  CHECK(header(out / "structure_factor.csv") == "k,S,error,vectors");
+  // bins of 0.02 up to --rdf-max 3
+  CHECK(cli_test::lines(cli_test::slurp(out / "rdf.csv")).size() == 1 + 150);
+  for (const char* f : {"transport.png", "structure.png"}) CHECK(cli_test::fs::exists(out / f));
+  check_summary_keys(cli_test::slurp(out / "summary.json"),
+                     {"viscosity", "viscosity_error", "thermal_conductivity_green_kubo",
+                      "self_diffusion_einstein", "transport_chi", "contact_value_rdf",
+                      "contact_value_rdf_error", "contact_value_from_Z"});
 }
 #endif

@@ -187,8 +187,8 @@ TEST_CASE("run --transport writes transport.csv, correlations.csv and transport.
   INFO("stderr: " << r.err << "\nstdout: " << r.out);
   REQUIRE(r.code == 0);
   CHECK(header(out / "transport.csv") ==
-        "coefficient,value,error,first_sonine,ratio,ratio_error,enskog,enskog_ratio,"
-        "enskog_ratio_error,t_cut,tail,c0,decay_rate,decay_rate_error,first_sonine_rate");
+        "coefficient,value,error,first_sonine,ratio,ratio_error,t_cut,tail,c0,decay_rate,"
+        "decay_rate_error,first_sonine_rate,enskog,enskog_ratio,enskog_ratio_error");
   const auto rows = cli_test::lines(cli_test::slurp(out / "transport.csv"));
   REQUIRE(rows.size() == 5);
   CHECK(starts_with(rows[1], "viscosity,"));
@@ -215,8 +215,8 @@ TEST_CASE("run --engine edmd --transport --structure writes its files", "[cli]")
   INFO("stderr: " << r.err << "\nstdout: " << r.out);
   REQUIRE(r.code == 0);
   CHECK(header(out / "transport.csv") ==
-        "coefficient,value,error,first_sonine,ratio,ratio_error,enskog,enskog_ratio,"
-        "enskog_ratio_error,t_cut,tail,c0,decay_rate,decay_rate_error,first_sonine_rate");
+        "coefficient,value,error,first_sonine,ratio,ratio_error,t_cut,tail,c0,decay_rate,"
+        "decay_rate_error,first_sonine_rate,enskog,enskog_ratio,enskog_ratio_error");
   const auto rows = cli_test::lines(cli_test::slurp(out / "transport.csv"));
   REQUIRE(rows.size() == 1 + 12 + 3);
   CHECK(starts_with(rows[1], "viscosity,"));

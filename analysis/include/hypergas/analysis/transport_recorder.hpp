@@ -83,9 +83,9 @@ struct TransportCoefficient {
 };
 
 /// Writes transport.csv: one row per coefficient, header coefficient, value, error,
-/// first_sonine, ratio, ratio_error, enskog, enskog_ratio, enskog_ratio_error, t_cut, tail,
-/// c0, decay_rate, decay_rate_error, first_sonine_rate (empty where not finite). Both
-/// engines' recorders write it.
+/// first_sonine, ratio, ratio_error, t_cut, tail, c0, decay_rate, decay_rate_error,
+/// first_sonine_rate, enskog, enskog_ratio, enskog_ratio_error (empty where not finite).
+/// Both engines' recorders write it.
 void write_transport_rows(const std::string& path, const std::vector<TransportCoefficient>& rows);
 
 /// The reduced first Sonine values of model `model` ("hs", "maxwell", "vhs" with rate

@@ -44,3 +44,9 @@ plot vacf_6d.csv vacf_6d.png "
 set xlabel 'time'; set ylabel '|C(t)| / C(0)'; set logscale xy
 stats 'vacf_6d.csv' u 'vacf' nooutput
 plot 'vacf_6d.csv' u 'time':(abs(column('vacf'))/STATS_max) w lp t 'VACF', '' u 'time':(0.05*(column('time')/0.05)**-3) w l dt 2 t 't^-3'"
+plot rdf_3d.csv rdf_3d_6d.png "
+set xlabel 'r / sigma'; set ylabel 'g(r)'; set xrange [0.9:*]
+plot 'rdf_3d.csv' u 'r':'g' w l lw 2 t '3D, eta = 0.30, Z = 4', 'rdf_6d.csv' u 'r':'g' w l lw 2 t '6D at Z = 4', 1 w l dt 2 t ''"
+plot viscosity_3d.csv viscosity_3d.png "
+set xlabel 'packing fraction eta'; set ylabel 'eta / eta_0'; set key left; set logscale y
+plot 'viscosity_3d.csv' u 'packing':'eta_over_eta0':'error' w yerr pt 7 t 'EDMD (Einstein-Helfand)', '' u 'packing':'enskog_over_eta0' w lp dt 2 t 'Enskog'"

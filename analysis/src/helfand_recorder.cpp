@@ -27,6 +27,9 @@ enum Group : int {
   stress_point, heat_point, velocity, displacement, n_groups
 };
 
+/// The shortest cut of the stress and heat-flux integrals (mean free times).
+constexpr double min_cut_tau = 5.0;
+
 /// Yeh & Hummer's constant of the cubic periodic box (3D).
 constexpr double xi_cubic = 2.837297;
 
@@ -209,11 +212,20 @@ const std::vector<TransportCoefficient>& HelfandRecorder::finish() {
     result_.push_back(r);
   };
 
+  // The cut: `window` integral times of the kinetic part, but at least 5 mean free times
+  // (the collisional stress of a dense fluid relaxes more slowly than the kinetic one) and
+  // at most a quarter of the lags (the Helfand slope is fitted up to 4 cuts).
+  const auto flux_cut = [&](const std::vector<double>& ck) {
+    const std::size_t K = ck.size() - 1;
+    const auto least = static_cast<std::size_t>(std::llround(min_cut_tau / set_.dt));
+    return std::min(std::max(detail::auto_cut(ck, running_integral(ck, h), h, set_.window), least),
+                    K / 4);
+  };
   // viscosity (scale 1 / kT) and conductivity (1 / kT^2): Helfand, GK, parts, point
   const auto flux = [&](const char* base, int g_tot, int g_kin, int g_col, int g_pt,
                         double scale, double ref, const enskog::Parts& f) {
     const std::vector<double> ck = corr_->mean(g_kin);
-    const std::size_t cut = detail::auto_cut(ck, running_integral(ck, h), h, set_.window);
+    const std::size_t cut = flux_cut(ck);
     const double g = detail::tail_rate(ck, running_integral(ck, h), cut, h);
     const std::size_t K = ck.size() - 1;
     const std::size_t a = std::min(2 * cut, K / 2), b = std::min(4 * cut, K);

@@ -22,7 +22,9 @@
 //     the increments' correlations c(l), MSD(n) = h^2 (n c(0) + 2 sum_{l<n} (n - l) c(l)),
 //     which is the average over every origin of the direct mean square;
 //   *_green_kubo: int C dt = h (c(0)/2 + sum_{l=1}^{cut} c(l)) + geometric tail (exact for
-//     interval averages), the cut t_c at `window` integral times of the kinetic part;
+//     interval averages), the cut t_c at `window` integral times of the kinetic part but
+//     at least 5 mean free times (a dense fluid's collisional stress relaxes more slowly)
+//     and at most a quarter of the lags;
 //   *_kinetic, *_cross, *_collisional: the same sum of the kinetic, and collisional
 //     correlations, the cross part the total minus both;
 //   *_kinetic_point: the kinetic part by the trapezoid rule (with end corrections) on the

@@ -133,7 +133,7 @@ void HelfandRecorder::observe(const Snapshot& s) {
   }
   tally::Helfand& H = *s.contacts->helfand;
   H.close_until(s.time);
-  const std::vector<double> rec = H.take();
+  const std::vector<double>& rec = H.records();
   const int d = dim_, S = H.stress_components();
   const std::size_t R = std::size_t(H.record_size());
   const double us = 1.0 / std::sqrt(volume_ * kT_), uq = us / std::sqrt(kT_);
@@ -164,6 +164,7 @@ void HelfandRecorder::observe(const Snapshot& s) {
     for (std::size_t c = 0; c < td; ++c) frame_[k++] = r[H.displacement_at() + int(c)] / h_;
     corr_->push(frame_.data());
   }
+  H.clear_records();
   H.reset_kinetic(s.velocities, n_, s.stride, s.time);
   t_last_ = s.time;
   coll_last_ = s.collisions;

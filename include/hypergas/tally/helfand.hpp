@@ -55,6 +55,7 @@ class Helfand {
     k_.assign(std::size_t(flux_components()), 0.0);
     inc_.assign(std::size_t(record_size()), 0.0);
     vt_.assign(tagged_.size() * std::size_t(dim_), 0.0);
+    tt_.assign(tagged_.size(), t0);
     reset_kinetic(v, n, stride, t0);
   }
 
@@ -114,8 +115,8 @@ class Helfand {
     }
     if (!tagged_.empty()) {
       const std::int32_t ta = tag_of_[a], tb = tag_of_[b];
-      if (ta >= 0) [[unlikely]] retag(ta, ni);
-      if (tb >= 0) [[unlikely]] retag(tb, nj);
+      if (ta >= 0) [[unlikely]] retag(ta, ni, t);
+      if (tb >= 0) [[unlikely]] retag(tb, nj, t);
     }
     ++ncoll_;
   }
@@ -144,16 +145,23 @@ class Helfand {
         for (int y = x; y < dim_; ++y) k_[std::size_t(k++)] += w[x] * w[y];
       for (int x = 0; x < dim_; ++x) k_[std::size_t(S + x)] += 0.5 * w[x] * w2;
     }
-    for (std::size_t a = 0; a < tagged_.size(); ++a)
-      for (int x = 0; x < dim_; ++x)
-        vt_[a * std::size_t(dim_) + std::size_t(x)] = v[tagged_[a] * std::size_t(stride) + std::size_t(x)];
+    for (std::size_t a = 0; a < tagged_.size(); ++a) {
+      double* w = &vt_[a * std::size_t(dim_)];
+      move_tagged(a, t);
+      for (int x = 0; x < dim_; ++x) w[x] = v[tagged_[a] * std::size_t(stride) + std::size_t(x)];
+    }
   }
 
-  /// The closed intervals' records since the last call, oldest first (record_size() doubles
-  /// each); clears them.
+  /// The closed intervals' records since the last clear_records(), oldest first
+  /// (record_size() doubles each).
+  const std::vector<double>& records() const { return closed_records_; }
+  /// Forgets the closed records (keeping the memory, so that the next ones are written
+  /// without reallocation).
+  void clear_records() { closed_records_.clear(); }
+  /// records(), then clear_records() (a copy; for tests).
   std::vector<double> take() {
-    std::vector<double> out;
-    out.swap(closed_records_);
+    std::vector<double> out = closed_records_;
+    closed_records_.clear();
     return out;
   }
   /// Current K and E (S + D values).
@@ -174,7 +182,6 @@ class Helfand {
     double* in = inc_.data();
     for (int k = 0; k < S; ++k) in[k] += k_[std::size_t(k)] * h;
     for (int x = 0; x < D; ++x) in[2 * S + x] += k_[std::size_t(S + x)] * h;
-    if (!tagged_.empty()) integrate_tagged(h);
     t_ = t;
   }
   void integrate_runtime(double t) {
@@ -187,14 +194,22 @@ class Helfand {
       default: integrate<6>(t); break;
     }
   }
-  void integrate_tagged(double h) {
-    double* x = inc_.data() + displacement_at();
-    for (std::size_t k = 0; k < vt_.size(); ++k) x[k] += vt_[k] * h;
+  /// Adds tagged particle a's displacement since its last update, up to t, to the open
+  /// interval (each tagged particle moves only at its own collisions and at the grid
+  /// points, not at every collision).
+  void move_tagged(std::size_t a, double t) {
+    double* x = inc_.data() + displacement_at() + a * std::size_t(dim_);
+    const double* v = &vt_[a * std::size_t(dim_)];
+    const double h = t - tt_[a];
+    for (int k = 0; k < dim_; ++k) x[k] += v[k] * h;
+    tt_[a] = t;
   }
-  void retag(std::int32_t a, const double* v) {
+  void retag(std::int32_t a, const double* v, double t) {
+    move_tagged(std::size_t(a), t);
     for (int x = 0; x < dim_; ++x) vt_[std::size_t(a) * std::size_t(dim_) + std::size_t(x)] = v[x];
   }
   void push_record() {
+    for (std::size_t a = 0; a < tagged_.size(); ++a) move_tagged(a, next_);
     const int S = stress_components();
     double* in = inc_.data();
     for (int k = 0; k < S; ++k) in[point_stress_at() + k] = k_[std::size_t(k)];
@@ -209,7 +224,7 @@ class Helfand {
   std::uint64_t closed_ = 0, ncoll_ = 0;
   std::vector<std::uint32_t> tagged_;
   std::vector<std::int32_t> tag_of_;
-  std::vector<double> k_, inc_, vt_, closed_records_;
+  std::vector<double> k_, inc_, vt_, tt_, closed_records_;
 };
 
 /// Where the EDMD engine keeps its Helfand tally (Snapshot::contacts): empty unless a

@@ -56,11 +56,12 @@ StructureRecorder::StructureRecorder(const StructureSettings& s, int dim, std::s
                                      double start)
     : set_(s), dim_(dim), n_(n), start_(start) {
   if (!(dim >= 1 && dim <= 6 && n >= 2 && s.dr > 0 && s.r_max > 1.0 + s.dr && s.k_max > 0 &&
-        s.vectors_per_shell >= 1 && s.contact_bins >= 3 && s.error_blocks >= 2 &&
+        s.vectors_per_shell >= 1 && s.max_vectors >= 1 && s.centres >= 1 &&
+        s.contact_bins >= 3 && s.error_blocks >= 2 &&
         std::isfinite(s.r_max) && std::isfinite(s.k_max)))
     throw InvalidInput(
         "structure: needs D in 1..6, N >= 2, dr > 0, r_max > 1 + dr, k_max > 0, >= 1 vector "
-        "per shell, >= 3 contact bins and >= 2 error blocks");
+        "per shell and in all, >= 1 centre, >= 3 contact bins and >= 2 error blocks");
 }
 
 void StructureRecorder::setup(double L) {
@@ -74,7 +75,8 @@ void StructureRecorder::setup(double L) {
   const double k1 = 2.0 * std::numbers::pi / L;
   const int M = static_cast<int>(std::floor(set_.k_max / k1));
   std::mt19937_64 rng(set_.seed);
-  const auto cap = std::size_t(set_.vectors_per_shell);
+  const auto cap = std::size_t(std::min(
+      set_.vectors_per_shell, std::max(4, set_.max_vectors / std::max(M, 1))));
   for (int s = 1; s <= M; ++s) {
     std::vector<std::vector<int>> found;
     const double lo = double(s) * s, hi = double(s + 1) * (s + 1);
@@ -132,25 +134,59 @@ void StructureRecorder::observe(const Snapshot& s) {
       const double p = s.positions[i * stride + std::size_t(a)];
       x[i * std::size_t(d) + std::size_t(a)] = p - L * std::floor(p / L);
     }
-  // g(r): pair counts by cells of side >= r_max (all pairs when fewer than 3 per side)
+  // g(r): pairs counted from M centres (all particles when N <= centres, else a block of M
+  // consecutive ids that moves on by M each frame) to every other particle, through cells
+  // of side >= r_max with their image shifts (all particles when fewer than 3 cells fit a
+  // side, with minimum images). With every particle a centre each pair is found once and
+  // counts twice.
   std::vector<double> counts(bins_, 0.0);
   const double r2max = r_max_ * r_max_, inv_dr = 1.0 / set_.dr;
-  const auto pair = [&](std::size_t i, std::size_t j) {
-    double r2 = 0;
-    for (int a = 0; a < d; ++a) {
-      double dx = x[i * std::size_t(d) + std::size_t(a)] - x[j * std::size_t(d) + std::size_t(a)];
-      dx -= L * std::round(dx / L);
-      r2 += dx * dx;
-    }
+  const std::size_t M = std::min<std::size_t>(n_, std::size_t(set_.centres));
+  const bool all = M == n_;
+  const double weight = all ? 2.0 : 1.0;
+  const std::size_t first = all ? 0 : (frames_ * M) % n_;
+  const auto bin = [&](double r2) {
     if (r2 < r2max) {
       const auto b = static_cast<std::size_t>(std::sqrt(r2) * inv_dr);
-      if (b < bins_) counts[b] += 1.0;
+      if (b < bins_) counts[b] += weight;
     }
   };
   const int m = static_cast<int>(std::floor(L / r_max_));
+  const double half = 0.5 * L;
   if (m < 3) {
-    for (std::size_t i = 0; i < n_; ++i)
-      for (std::size_t j = i + 1; j < n_; ++j) pair(i, j);
+    const auto scan = [&]<int Dim>() {
+      for (std::size_t c = 0; c < M; ++c) {
+        const std::size_t i = (first + c) % n_;
+        const double* xi = &x[i * Dim];
+        // distances of a block of partners first (a loop the compiler vectorises), then bins
+        constexpr std::size_t block = 256;
+        double r2[block];
+        for (std::size_t j0 = all ? i + 1 : 0; j0 < n_; j0 += block) {
+          const std::size_t nb = std::min(block, n_ - j0);
+          for (std::size_t b = 0; b < nb; ++b) {
+            const double* xj = &x[(j0 + b) * Dim];
+            double s2 = 0;
+            for (int k = 0; k < Dim; ++k) {  // minimum image: both coordinates lie in [0, L)
+              double dx = xi[k] - xj[k];
+              dx = dx > half ? dx - L : dx;
+              dx = dx < -half ? dx + L : dx;
+              s2 += dx * dx;
+            }
+            r2[b] = s2;
+          }
+          for (std::size_t b = 0; b < nb; ++b)
+            if (r2[b] < r2max && j0 + b != i) bin(r2[b]);
+        }
+      }
+    };
+    switch (d) {
+      case 1: scan.template operator()<1>(); break;
+      case 2: scan.template operator()<2>(); break;
+      case 3: scan.template operator()<3>(); break;
+      case 4: scan.template operator()<4>(); break;
+      case 5: scan.template operator()<5>(); break;
+      default: scan.template operator()<6>(); break;
+    }
   } else {
     std::size_t cells = 1;
     for (int a = 0; a < d; ++a) cells *= std::size_t(m);
@@ -169,19 +205,35 @@ void StructureRecorder::observe(const Snapshot& s) {
     }
     std::size_t offsets = 1;
     for (int a = 0; a < d; ++a) offsets *= 3;
-    for (std::size_t i = 0; i < n_; ++i)
+    for (std::size_t c0 = 0; c0 < M; ++c0) {
+      const std::size_t i = (first + c0) % n_;
+      const double* xi = &x[i * std::size_t(d)];
       for (std::size_t o = 0; o < offsets; ++o) {
         std::size_t c = 0, code = o;
+        std::array<double, 6> shift{};
         std::array<int, 6> off{};
         for (int a = 0; a < d; ++a) off[std::size_t(a)] = int(code % 3) - 1, code /= 3;
         for (int a = d - 1; a >= 0; --a) {
-          const int k = (coord[i * std::size_t(d) + std::size_t(a)] + off[std::size_t(a)] + m) % m;
+          int k = coord[i * std::size_t(d) + std::size_t(a)] + off[std::size_t(a)];
+          if (k < 0) k += m, shift[std::size_t(a)] = -L;
+          else if (k >= m) k -= m, shift[std::size_t(a)] = L;
           c = c * std::size_t(m) + std::size_t(k);
         }
-        for (std::int64_t j = head[c]; j >= 0; j = next[std::size_t(j)])
-          if (std::size_t(j) > i) pair(i, std::size_t(j));
+        for (std::int64_t j = head[c]; j >= 0; j = next[std::size_t(j)]) {
+          if (all ? std::size_t(j) <= i : std::size_t(j) == i) continue;
+          const double* xj = &x[std::size_t(j) * std::size_t(d)];
+          double r2 = 0;
+          for (int k = 0; k < d; ++k) {
+            const double dx = xj[k] + shift[std::size_t(k)] - xi[k];
+            r2 += dx * dx;
+          }
+          bin(r2);
+        }
       }
+    }
   }
+  centres_ += M;
+  for (double& c : counts) c /= static_cast<double>(M);  // per centre
   frames_g_.push_back(std::move(counts));
   // S(k): direct sums over the particles, exp(i k . x) as a product over the axes of
   // powers of exp(i 2 pi x_a / L), tabulated for a chunk of particles at a time
@@ -256,7 +308,8 @@ const StructureResult& StructureRecorder::finish() {
   const auto J = static_cast<std::size_t>(
       std::min<std::uint64_t>(std::uint64_t(set_.error_blocks), frames_));
   const double V = std::pow(L_, d), N = static_cast<double>(n_);
-  const double norm = 2.0 / (N * (N - 1.0) / V * ball(d));  // times 1 / (r2^D - r1^D)
+  // per centre and frame: (N - 1) / V * ball(D) (r2^D - r1^D) pairs in a shell of an ideal gas
+  const double norm = 1.0 / ((N - 1.0) / V * ball(d));  // times 1 / (r2^D - r1^D)
   StructureResult& R = result_;
   R.r_max = r_max_;
   R.frames = frames_;

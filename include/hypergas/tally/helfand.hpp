@@ -231,6 +231,16 @@ class Helfand {
 /// recorder installed one.
 struct ContactSlot {
   std::unique_ptr<Helfand> helfand;
+
+  ContactSlot() = default;
+  ContactSlot(ContactSlot&&) noexcept = default;
+  ContactSlot& operator=(ContactSlot&&) noexcept = default;
+  /// A copied engine starts without a tally (the tally is a recorder's, not state).
+  ContactSlot(const ContactSlot&) {}
+  ContactSlot& operator=(const ContactSlot&) {
+    helfand.reset();
+    return *this;
+  }
 };
 
 }  // namespace hypergas::tally

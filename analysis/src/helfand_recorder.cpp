@@ -46,11 +46,6 @@ std::vector<int> layout(int d, std::size_t tagged) {
   return g;
 }
 
-std::size_t lag_count(const TransportSettings& s) {
-  const auto k = static_cast<std::size_t>(std::ceil(s.max_lag / s.dt - 1e-9)) + 1;
-  return (k + 15) / 16 * 16;
-}
-
 /// Mean square Helfand moment at every lag n from the interval averages' correlation c:
 /// h^2 (n c(0) + 2 sum_{l=1}^{n-1} (n - l) c(l)).
 std::vector<double> mean_square(const std::vector<double>& c, double h) {
@@ -101,7 +96,7 @@ void HelfandRecorder::install(const Snapshot& s) {
   tau_ = s.time / s.collisions_per_particle;
   h_ = set_.dt * tau_;
   volume_ = std::pow(s.box, dim_);
-  const std::size_t lags = lag_count(set_);
+  const std::size_t lags = detail::lag_count(set_.max_lag, set_.dt);
   const double span = end_ - s.time;
   const auto planned = static_cast<std::uint64_t>(std::floor(span / h_ + 1e-9));
   if (planned < 2 * lags)
@@ -216,18 +211,18 @@ const std::vector<TransportCoefficient>& HelfandRecorder::finish() {
   // The cut: `window` integral times of the kinetic part, but at least 5 mean free times
   // (the collisional stress of a dense fluid relaxes more slowly than the kinetic one) and
   // at most a quarter of the lags (the Helfand slope is fitted up to 4 cuts).
-  const auto flux_cut = [&](const std::vector<double>& ck) {
+  const auto flux_cut = [&](const std::vector<double>& ck, const std::vector<double>& Ik) {
     const std::size_t K = ck.size() - 1;
     const auto least = static_cast<std::size_t>(std::llround(min_cut_tau / set_.dt));
-    return std::min(std::max(detail::auto_cut(ck, running_integral(ck, h), h, set_.window), least),
-                    K / 4);
+    return std::min(std::max(detail::auto_cut(ck, Ik, h, set_.window), least), K / 4);
   };
   // viscosity (scale 1 / kT) and conductivity (1 / kT^2): Helfand, GK, parts, point
   const auto flux = [&](const char* base, int g_tot, int g_kin, int g_col, int g_pt,
                         double scale, double ref, const enskog::Parts& f) {
     const std::vector<double> ck = corr_->mean(g_kin);
-    const std::size_t cut = flux_cut(ck);
-    const double g = detail::tail_rate(ck, running_integral(ck, h), cut, h);
+    const std::vector<double> Ik = running_integral(ck, h);
+    const std::size_t cut = flux_cut(ck, Ik);
+    const double g = detail::tail_rate(ck, Ik, cut, h);
     const std::size_t K = ck.size() - 1;
     const std::size_t a = std::min(2 * cut, K / 2), b = std::min(4 * cut, K);
     const auto helfand = [&](const std::vector<double>& c) {
@@ -237,10 +232,9 @@ const std::vector<TransportCoefficient>& HelfandRecorder::finish() {
       return increment_value(c, cut, h, g).first * scale;
     };
     const std::vector<double> pt = corr_->mean(g_pt);
+    const double rate_pt = detail::tail_rate(pt, running_integral(pt, h), cut, h);
     const auto point = [&](const std::vector<double>& c) {
-      const std::vector<double> I = running_integral(c, h);
-      return detail::cut_value(c, I, cut, h, detail::tail_rate(pt, running_integral(pt, h), cut, h))
-                 .first * scale;
+      return detail::cut_value(c, running_integral(c, h), cut, h, rate_pt).first * scale;
     };
     std::vector<double> s_h, s_gk, s_k, s_c, s_x, s_p;
     for (int j = 0; j < J; ++j) {

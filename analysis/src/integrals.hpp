@@ -11,6 +11,13 @@
 
 namespace hypergas::analysis::detail {
 
+/// Lags of a correlation up to max_lag at spacing dt (both in the same unit), lag 0
+/// included, rounded up to a multiple of 16 (the correlator's FFT blocks).
+inline std::size_t lag_count(double max_lag, double dt) {
+  const auto k = static_cast<std::size_t>(std::ceil(max_lag / dt - 1e-9)) + 1;
+  return (k + 15) / 16 * 16;
+}
+
 /// Trapezoid integrals I(k) = int_0^{k dt} C.
 inline std::vector<double> running_integral(const std::vector<double>& c, double dt) {
   std::vector<double> I(c.size(), 0.0);

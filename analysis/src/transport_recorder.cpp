@@ -45,11 +45,6 @@ std::vector<int> series_groups(const TransportSettings& s, int dim, std::size_t 
   return layout(dim, static_cast<int>(std::min<std::size_t>(std::size_t(s.tagged), n)));
 }
 
-std::size_t lag_count(const TransportSettings& s) {
-  const auto k = static_cast<std::size_t>(std::ceil(s.max_lag / s.dt - 1e-9)) + 1;
-  return (k + 15) / 16 * 16;
-}
-
 }  // namespace
 
 std::vector<double> first_sonine(const std::string& model, double a, int d) {
@@ -76,7 +71,7 @@ TransportRecorder::TransportRecorder(const TransportSettings& s, int dim, std::s
       n_(n),
       model_(std::move(model)),
       exponent_(exponent),
-      corr_(series_groups(s, dim, n), lag_count(s), frames, s.error_blocks) {
+      corr_(series_groups(s, dim, n), detail::lag_count(s.max_lag, s.dt), frames, s.error_blocks) {
   first_sonine(model_, exponent_, dim_);  // checks the model
   const auto t = static_cast<std::size_t>(std::min<std::size_t>(std::size_t(set_.tagged), n_));
   for (std::size_t k = 0; k < t; ++k) tagged_.push_back(k * n_ / t);

@@ -9,6 +9,7 @@
 #include <fmt/core.h>
 
 #include "engine_runs.hpp"
+#include "granular_summary.hpp"
 #include "hypergas/analysis/moments_recorder.hpp"
 #include "hypergas/conserved.hpp"
 #include "hypergas/dsmc/engine.hpp"
@@ -162,7 +163,9 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
       {"collisions", total},
       {"wall_s", wall},
       {"collisions_per_s", total_rate},
-      {"energy_rel_drift", *std::max_element(drift_e.begin(), drift_e.end())},
+      // a granular gas loses its energy: no drift to report
+      {"energy_rel_drift", o.restitution != 1.0 ? std::numeric_limits<double>::quiet_NaN()
+                                                : *std::max_element(drift_e.begin(), drift_e.end())},
       {"momentum_drift", *std::max_element(drift_p.begin(), drift_p.end())},
       {"init", std::string(registry::name(o.initial_state()))},
       {"time", until},
@@ -186,6 +189,11 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
       {"checkpoints", static_cast<std::int64_t>(st0.checkpoints)},
       {"resumes", static_cast<std::int64_t>(st0.resumes)},
   };
+  if (o.restitution != 1.0)
+    add_granular_summary(rec.summary, rec.moments,
+                         GranularRun{D, o.restitution, cfg.drive != dsmc::Drive::none,
+                                     std::is_same_v<Model, dsmc::HardSpheres>},
+                         true);
   if (transport) {
     rec.summary.emplace_back("transport_dt", transport->dt());
     rec.summary.emplace_back("transport_samples", static_cast<std::int64_t>(transport->frames()));

@@ -1,9 +1,12 @@
 // sim/run_edmd.cpp -- `hypergas run --engine edmd`: event-driven MD with recorders.
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "engine_runs.hpp"
+#include "granular_summary.hpp"
+#include "hypergas/granular/theory.hpp"
 #include "hypergas/analysis/moments_recorder.hpp"
 #include "hypergas/analysis/vacf_recorder.hpp"
 #include "hypergas/conserved.hpp"
@@ -40,7 +43,9 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress, RunCo
   DriverState st;
   Conserved<D> c0;
   std::optional<Engine> e;
-  Engine& engine = start_engine(e, cfg, ctx, st, c0, rec.moments, vacf);
+  edmd::Config elastic = cfg;
+  elastic.restitution = 1.0;  // the equilibration (see Quench below)
+  Engine& engine = start_engine(e, elastic, ctx, st, c0, rec.moments, vacf);
   std::vector<Observer*> targets{&rec.moments, &vacf};
   if (o.transport) {
     analysis::TransportSettings ts;
@@ -58,7 +63,20 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress, RunCo
     rec.structure = std::make_unique<analysis::StructureRecorder>(ss, D, cfg.n, t_eq);
     targets.push_back(rec.structure.get());
   }
-  RunObserver obs(std::move(targets), "edmd", until, progress);
+  // A granular run equilibrates elastically and is quenched after the first sample (at the
+  // end of the equilibration): the cooling starts from the equilibrium fluid.
+  struct Quench final : Observer {
+    Engine& e;
+    Observer& next;
+    double alpha;
+    Quench(Engine& en, Observer& nx, double a) : e(en), next(nx), alpha(a) {}
+    void observe(const Snapshot& s) override {
+      next.observe(s);
+      if (e.restitution() != alpha) e.set_restitution(alpha);
+    }
+  };
+  RunObserver inner(std::move(targets), "edmd", until, progress);
+  Quench obs(engine, inner, o.restitution);
   const auto save = [&](checkpoint::Writer& w) {
     save_run(w, o, st, c0, engine, rec.moments, vacf);
   };
@@ -70,6 +88,9 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress, RunCo
   const double engine_s = st.engine_s;
   const auto coll = static_cast<std::int64_t>(engine.collisions());
   const auto last = [&](const char* col) { return rec.moments.column(col).back(); };
+  const bool granular = o.restitution != 1.0;
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  const double Z = granular ? nan : engine.pressure_Z();  // no equilibrium pressure
   const auto ta = Clock::now();
   if (rec.helfand) rec.helfand->finish();
   if (rec.structure) rec.structure->finish();
@@ -83,11 +104,11 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress, RunCo
       {"collisions", coll},
       {"wall_s", wall},
       {"collisions_per_s", engine_s > 0.0 ? static_cast<double>(coll) / engine_s : 0.0},
-      {"energy_rel_drift", energy_rel_drift(c0, c1)},
+      {"energy_rel_drift", granular ? nan : energy_rel_drift(c0, c1)},
       {"momentum_drift", momentum_drift(c0, c1)},
       {"packing", engine.packing()},
       {"scan", std::string(Engine::scan_name)},
-      {"Z", engine.pressure_Z()},
+      {"Z", Z},
       {"collision_rate", engine.collision_rate()},
       {"mean_free_time", engine.mean_free_time()},
       {"init", std::string(registry::name(o.initial_state()))},
@@ -106,8 +127,25 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress, RunCo
       {"peak_rss_bytes_per_particle", peak_rss_bytes() / static_cast<double>(o.n)},
       {"checkpoints", static_cast<std::int64_t>(st.checkpoints)},
       {"resumes", static_cast<std::int64_t>(st.resumes)},
-      {"contact_value_from_Z", edmd::contact_value(D, engine.pressure_Z(), engine.packing())},
+      {"contact_value_from_Z", granular ? nan : edmd::contact_value(D, Z, engine.packing())},
   };
+  if (granular) {
+    add_granular_summary(rec.summary, rec.moments, GranularRun{D, o.restitution, false, true},
+                         false);
+    // Haff's t0 of the Enskog gas at the initial temperature (sigma sqrt(m/kT0)), with the
+    // contact value of Henderson (2D) or Carnahan-Starling (3D)
+    double t0 = nan;
+    if ((D == 2 || D == 3) && !Species) {
+      const double eta = engine.packing();
+      const double chi = D == 2 ? granular::chi_henderson(eta) : granular::chi_carnahan_starling(eta);
+      const double a2 = granular::a2_hcs(o.restitution, D);
+      t0 = granular::haff_t0(o.restitution, D, a2) /
+           granular::enskog_collision_frequency(D, eta, chi);
+    }
+    rec.summary.emplace_back("haff_t0_enskog", t0);
+    rec.summary.emplace_back("tc_elastic_collisions",
+                             static_cast<std::int64_t>(engine.tc_elastic_collisions()));
+  }
   if (rec.structure) {
     rec.summary.emplace_back("contact_value_rdf", rec.structure->finish().contact);
     rec.summary.emplace_back("contact_value_rdf_error", rec.structure->finish().contact_error);

@@ -30,6 +30,10 @@ constexpr const char* common_columns[] = {"time",        "collisions_per_particl
                                           "kl_speed",    "ks_p_speed",
                                           "chi2_p_speed"};
 constexpr std::size_t n_common_columns = std::size(common_columns);
+// After the per-species columns: the Sonine cumulants and the true temperature and time of
+// a granular gas whose engine stores scaled velocities (Snapshot::log_velocity_scale).
+constexpr const char* trailing_columns[] = {"a2", "a3", "T", "real_time"};
+constexpr std::size_t n_trailing_columns = std::size(trailing_columns);
 }  // namespace
 
 MomentsRecorder::MomentsRecorder(std::size_t bins, std::size_t ks_cap, std::uint64_t ks_seed)
@@ -412,6 +416,17 @@ bool MomentsRecorder::record(const Snapshot& s, const tally::Tally& t) {
       const auto nk = static_cast<double>(t.count(k));
       row.push_back(nk > 0 ? t.energy(k) / (s.dim * nk) * scale2 : NAN);
     }
+  {
+    // a2 and a3 of the pooled speeds: <v^4> = (1 + a2) (D + 2)/D <v^2>^2 and
+    // <v^6> = (1 + 3 a2 - a3) (D + 2)(D + 4)/D^2 <v^2>^3 (granular/theory.hpp)
+    const double d = s.dim, m2 = m.m2.value;
+    const double a2 = d / (d + 2.0) * m.m4.value / (m2 * m2) - 1.0;
+    const double a3 = 1.0 + 3.0 * a2 - d * d / ((d + 2.0) * (d + 4.0)) * m.m6.value / (m2 * m2 * m2);
+    row.push_back(a2);
+    row.push_back(a3);
+    row.push_back(m.kT * std::exp(2.0 * s.log_velocity_scale));
+    row.push_back(std::isnan(s.real_time) ? s.time : s.real_time);
+  }
 
   if (columns_.empty()) {
     n_species_ = ns;
@@ -419,6 +434,7 @@ bool MomentsRecorder::record(const Snapshot& s, const tally::Tally& t) {
     columns_.assign(std::begin(common_columns), std::end(common_columns));
     if (ns > 1)
       for (int k = 0; k < ns; ++k) columns_.push_back("kT_" + std::to_string(k));
+    columns_.insert(columns_.end(), std::begin(trailing_columns), std::end(trailing_columns));
   }
   rows_.push_back(std::move(row));
   last_histograms_ = std::move(hists);
@@ -475,7 +491,7 @@ void MomentsRecorder::check_restored() const {
   if (empty) return;
   if (n_species_ < 1 || dim_ < 1) bad("no species or no dimension");
   const std::size_t per_species = n_species_ > 1 ? static_cast<std::size_t>(n_species_) : 0;
-  if (columns_.size() != n_common_columns + per_species ||
+  if (columns_.size() != n_common_columns + per_species + n_trailing_columns ||
       last_histograms_.size() != 1 + per_species)
     bad("the number of columns or histograms does not fit the species count");
   for (const auto& r : rows_)

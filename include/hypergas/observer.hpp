@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #include "hypergas/particles.hpp"
 
@@ -45,6 +46,13 @@ struct Snapshot {
   tally::ContactSlot* contacts = nullptr;
   /// Side of the periodic box (length units), or 0 (velocity space).
   double box = 0.0;
+  /// The velocities are the true ones divided by exp(log_velocity_scale): a freely cooling
+  /// granular gas in the DSMC engine keeps them at its initial temperature
+  /// (dsmc/granular.hpp); 0 for every other state.
+  double log_velocity_scale = 0.0;
+  /// Time in the unit of the initial temperature (DSMC: mean collision times at kT0), or
+  /// NaN when it is `time` (every engine whose clock is not rescaled).
+  double real_time = std::numeric_limits<double>::quiet_NaN();
 
   /// Inverse mass of particle i (1 for a single unit-mass species).
   double inverse_mass(std::size_t i) const {

@@ -26,6 +26,7 @@ constexpr std::string_view mean_free_time_unit =
 void check_engine(std::string_view v) { (void)registry::engine(v); }
 void check_model(std::string_view v) { (void)registry::model(v); }
 void check_init(std::string_view v) { (void)registry::initial_state(v); }
+void check_drive(std::string_view v) { (void)drive_kind(v); }
 void check_duration(std::string_view v) { (void)parse_duration("--checkpoint-wall", std::string(v)); }
 std::string engines_help() { return registry::describe(registry::engines); }
 std::string models_help() { return registry::describe_models(); }
@@ -54,6 +55,10 @@ const Option table[] = {
   {"init", 0, E::both, U::engine, &R::init, {}, check_init, inits_help, "", "initial velocities:", "", true, false},
   {"until", 0, E::both, U::span, &R::until, {pos_open, 1e12, true, false, "a finite time > 0 and at most 1e12"}, nullptr, nullptr, time_unit, "end time", "", false, false},
   {"every", 0, E::both, U::span, &R::every, {pos_open, 1e308, true, false, "a finite interval > 0"}, nullptr, nullptr, time_unit, "sampling interval, rounded so that it divides the sampled span: the rows are evenly spaced and the last is at --until (include/hypergas/schedule.hpp)", "until/50", false, false},
+  {"restitution", 0, E::both, U::engine, &R::restitution, {0, 1, false, false, "in [0, 1]"}, nullptr, nullptr, "", "coefficient of normal restitution alpha: each collision's impulse along the normal is scaled by (1 + alpha)/2 and the gas cools (granular gas; 1 = elastic). dsmc: the freely cooling gas is kept in scaled velocities, time runs in mean collision times at the current temperature, and moments.csv gives T and real_time (docs/validation.md)", "", false, false},
+  {"drive", 0, E::dsmc, U::engine, &R::drive, {}, check_drive, nullptr, "", "energy input of a granular gas: none (the homogeneous cooling state) or white-noise (random kicks that hold the first-Sonine temperature at --temperature; hard spheres, --restitution < 1)", "", false, false},
+  {"drive-dt", 0, E::dsmc, U::engine, &R::drive_dt, {pos_open, 1, true, false, "a finite interval > 0 and at most 1"}, nullptr, nullptr, "mean collision times", "with --drive white-noise: interval between the kicks", "", false, false},
+  {"tc-time", 0, E::edmd, U::engine, &R::tc_time, {0, 1e308, false, false, "a finite time >= 0"}, nullptr, nullptr, "sigma sqrt(m/kT)", "with --restitution < 1: a collision within this time of either particle's previous one is elastic (the TC model of Luding and McNamara against inelastic collapse)", "", false, false},
   {"packing", 0, E::edmd, U::engine, &R::packing, {pos_open, 1, true, false, "a finite fraction > 0 and at most 1"}, nullptr, jamming_help, "", "packing fraction eta (volume of the spheres / box volume),", "", false, false},
   {"start-packing", 0, E::edmd, U::engine, &R::start_packing, {pos_open, 1, true, true, "> 0 and < 1"}, nullptr, nullptr, "", "start from the lattice at this packing, at most --packing, and compress (Lubachevsky-Stillinger) to --packing: a dense fluid or glass instead of a crystal", "start at --packing", false, false},
   {"mass-ratio", 0, E::both, U::engine, &R::mass_ratio, {pos_open, 1e308, true, false, "a finite mass ratio > 0"}, nullptr, nullptr, "", "m2/m1 of a two-mass gas (1 = one species; use != 1 in D = 1)", "", false, false},
@@ -148,6 +153,10 @@ RunOptions defaults(registry::EngineKind e) {
   o.temperature = d.initial.kT;
   o.model = std::string(dsmc::HardSpheres::name);
   o.vhs_exponent = d.vhs_exponent;
+  o.restitution = dsmc ? d.restitution : m.restitution;
+  o.drive = std::string(drive_name(d.drive));
+  o.drive_dt = d.drive_dt;
+  o.tc_time = m.tc_time;
   o.packing = m.packing;
   o.start_packing = m.start_packing;
   // The run's span and the command's switches.

@@ -142,6 +142,22 @@ InitialState RunOptions::initial_state() const { return registry::initial_state(
 
 namespace {
 /// --transport and its options (analysis/transport_recorder.hpp).
+void validate_granular(const RunOptions& o) {
+  const bool driven = drive_kind(o.drive) != dsmc::Drive::none;
+  if (driven && o.restitution == 1.0)
+    bad("--drive white-noise needs --restitution < 1 (an elastic gas driven by noise heats "
+        "without bound)");
+  if (driven && o.model != dsmc::HardSpheres::name)
+    bad(fmt::format("--drive white-noise is defined for --model {} only, not --model {}",
+                    dsmc::HardSpheres::name, o.model));
+  if (!driven && o.was_given("--drive-dt"))
+    bad("--drive-dt applies with --drive white-noise only");
+  if (o.restitution == 1.0 && o.was_given("--tc-time"))
+    bad("--tc-time applies with --restitution < 1 only");
+  if (o.restitution != 1.0 && o.structure)
+    bad("--structure measures the elastic fluid at equilibrium: leave out --restitution");
+}
+
 void validate_transport(const RunOptions& o) {
   if (!o.transport) {
     for (const char* k : {"--correlation-dt", "--correlation-time", "--tagged"})
@@ -151,6 +167,8 @@ void validate_transport(const RunOptions& o) {
   if (o.dim < 2)
     bad("--transport needs --dim >= 2: in D = 1 equal masses only swap velocities, so no "
         "flux relaxes");
+  if (o.restitution != 1.0)
+    bad("--transport measures the elastic gas at equilibrium: leave out --restitution");
   if (two_species(o)) bad("--transport measures a one-species gas: leave out --mass-ratio");
   if (o.n < 100)
     bad(fmt::format("--transport needs --n >= 100 (its 1/N corrections grow below), got {}",
@@ -199,6 +217,7 @@ void validate(const RunOptions& o) {
   if ((o.checkpoint_every > 0.0 || !o.checkpoint_wall.empty()) && o.replicas != 1)
     bad("--checkpoint-every and --checkpoint-wall need --replicas 1 (one system)");
   validate_transport(o);
+  validate_granular(o);
   if (!o.structure)
     for (const char* k : {"--rdf-max", "--k-max"})
       if (o.was_given(k)) bad(fmt::format("{} applies with --structure only", k));
@@ -240,6 +259,9 @@ dsmc::Config dsmc_config(const RunOptions& o) {
   auto cfg = common_config<dsmc::Config>(o);
   cfg.vhs_exponent = o.vhs_exponent;
   cfg.initial.kT = o.temperature;
+  cfg.restitution = o.restitution;
+  cfg.drive = drive_kind(o.drive);
+  cfg.drive_dt = o.drive_dt;
   return cfg;
 }
 
@@ -248,9 +270,21 @@ edmd::Config edmd_config(const RunOptions& o) {
   cfg.packing = o.packing;
   cfg.start_packing = o.start_packing;
   cfg.initial.kT = 1.0;  // EDMD units: kT = 1
+  cfg.restitution = o.restitution;
+  cfg.tc_time = o.tc_time;
   return cfg;
 }
 
 bool two_species(const RunOptions& o) { return o.mass_ratio != 1.0; }
+
+dsmc::Drive drive_kind(std::string_view name) {
+  if (name == "none") return dsmc::Drive::none;
+  if (name == "white-noise") return dsmc::Drive::white_noise;
+  bad(fmt::format("unknown drive '{}': none or white-noise", name));
+}
+
+std::string_view drive_name(dsmc::Drive d) {
+  return d == dsmc::Drive::white_noise ? "white-noise" : "none";
+}
 
 }  // namespace hypergas::options

@@ -15,6 +15,10 @@ namespace hypergas::dsmc {
 /// Time integration: the exact Kac process or Bird's no-time-counter scheme with a step.
 enum class Scheme { exact, ntc };
 
+/// Energy input of a granular gas (restitution < 1): none (the homogeneous cooling state) or
+/// a white-noise force on every particle (a driven steady state; dsmc/granular.hpp).
+enum class Drive { none, white_noise };
+
 /// A DSMC run (the collision model is the engine's Model template argument). Time in equilibrium mean collision times; temperatures in energy units with
 /// the mass of species 0 equal to 1. Two species: set `initial.mass_ratio` (m1/m0),
 /// `initial.fraction` (number fraction of species 1) and, for different initial temperatures,
@@ -29,6 +33,13 @@ struct Config {
   std::uint64_t seed = 1;                     ///< all randomness derives from it
   InitialState init = InitialState::delta;    ///< initial velocity state
   InitialParams initial;                      ///< kT, per-species kT, fraction, mass ratio, ...
+  /// Coefficient of normal restitution alpha in [0, 1]: a collision's impulse along its
+  /// normal is scaled by (1 + alpha) / 2 (1: elastic, the seed's kernel bit for bit). With
+  /// alpha < 1 the gas cools (dsmc/granular.hpp: scaled velocities, the engine's clock).
+  double restitution = 1.0;
+  Drive drive = Drive::none;  ///< white_noise: hard spheres with restitution < 1 only
+  /// White-noise drive: interval between the velocity kicks (mean collision times).
+  double drive_dt = 0.05;
 };
 
 /// Throws InvalidInput if `c` cannot be run.
@@ -39,6 +50,15 @@ inline void validate(const Config& c) {
     throw InvalidInput("DSMC: VHS exponent must be in [0, 1]");
   if (c.scheme == Scheme::ntc && !(std::isfinite(c.dt) && c.dt > 0.0))
     throw InvalidInput("DSMC: NTC time step must be finite and > 0");
+  if (!(c.restitution >= 0.0 && c.restitution <= 1.0))
+    throw InvalidInput("DSMC: the coefficient of restitution must be in [0, 1]");
+  if (c.drive == Drive::white_noise) {
+    if (!(c.restitution < 1.0))
+      throw InvalidInput("DSMC: the white-noise drive needs a restitution below 1 (an elastic "
+                         "gas driven by noise heats without bound)");
+    if (!(std::isfinite(c.drive_dt) && c.drive_dt > 0.0 && c.drive_dt <= 1.0))
+      throw InvalidInput("DSMC: the drive's kick interval must be in (0, 1]");
+  }
 }
 
 }  // namespace hypergas::dsmc

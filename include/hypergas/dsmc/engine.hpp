@@ -121,6 +121,7 @@ class Engine {
       s_.observed_at);
     a(s_.collisions, s_.candidates, s_.since_scan, s_.self_check, s_.check_failures,
       s_.species_w);
+    a(s_.impulse, s_.log_scale, s_.real_time, s_.kT0, s_.kicks);
     if (s_.p.size() != s_.n) throw InvalidInput("checkpoint: particle count does not match");
   }
   /// "dsmc D=3 model=hs species=0": what a checkpoint must match.
@@ -137,7 +138,10 @@ class Engine {
     snap.time = s_.time;
     snap.collisions = s_.collisions;
     snap.collisions_per_particle = collisions_per_particle();
-    snap.tally = &s_.tally;
+    // A granular gas's temperature changes between rows: its moments come from a pass.
+    snap.tally = s_.impulse == 1.0 ? &s_.tally : nullptr;
+    snap.log_velocity_scale = s_.log_scale;
+    snap.real_time = real_time();
     if constexpr (F.species) {
       int ns = 1;
       for (int k = 0; k < max_species; ++k) s_.species_w[k] = s_.p.species_inv_mass(k);
@@ -176,8 +180,25 @@ class Engine {
     advance_to(t);
   }
 
-  /// Current time (mean collision times).
+  /// Current time (mean collision times; with restitution < 1 and no drive, of the gas at
+  /// its current temperature: dsmc/granular.hpp).
   double time() const { return s_.time; }
+  /// Time in mean collision times at the initial temperature (equals time() unless the gas
+  /// cools freely: dsmc/granular.hpp).
+  double real_time() const { return detail::cooling(s_) ? s_.real_time : s_.time; }
+  /// The particles' stored velocities are the true ones divided by exp(log_velocity_scale())
+  /// (0 unless the gas cools freely).
+  double log_velocity_scale() const { return s_.log_scale; }
+  /// The temperature of the true velocities, sum m v^2 / (D (N - 1)) (energy units).
+  double temperature() const {
+    return equilibrium_temperature(s_.p) * std::exp(2.0 * s_.log_scale);
+  }
+  /// The initial temperature kT0 that fixes the time unit (energy units).
+  double initial_temperature() const { return s_.kT0; }
+  /// The coefficient of normal restitution.
+  double restitution() const { return s_.cfg.restitution; }
+  /// White-noise kicks so far (drive = white_noise).
+  std::uint64_t kicks() const { return s_.kicks; }
   /// Accepted collisions so far.
   std::uint64_t collisions() const { return s_.collisions; }
   /// Candidate pairs tested so far (acceptance ratio = collisions / candidates).
@@ -238,6 +259,10 @@ class Engine {
     if (given) require_zero_momentum(s_.p);
     s_.n = static_cast<std::uint32_t>(s_.p.size());
     s_.c = dsmc::rate_constant(s_.p, s_.model.exponent());
+    s_.kT0 = equilibrium_temperature(s_.p);
+    s_.impulse = 0.5 * (1.0 + cfg.restitution);
+    if (cfg.drive != Drive::none && !std::is_same_v<Model, HardSpheres>)
+      throw InvalidInput("DSMC: the white-noise drive is defined for hard spheres (--model hs)");
     detail::advise_huge_pages(s_.p.velocity_data().data(),
                               s_.p.velocity_data().size() * sizeof(double));
     detail::retune(s_, true);

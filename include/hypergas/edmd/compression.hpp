@@ -12,7 +12,9 @@
 // larger diameters. Near jamming the collision rate diverges; the compression then stops
 // with InvalidInput after `Config::max_compression_collisions` collisions. With
 // Config::debug_overlap the all-pairs check runs at every stage end during compression
-// (after every event once compressed).
+// (after every event once compressed). The compression is elastic: an engine with
+// restitution below 1 (restitution.hpp) compresses at restitution 1 and gets its
+// restitution back afterwards (with fresh TC clocks, Engine::set_restitution).
 #pragma once
 
 #include <algorithm>
@@ -25,12 +27,25 @@
 namespace hypergas::edmd {
 
 /// Grows the diameter scale of `e` to `target_scale` (dimensionless, 1 = nominal diameters)
-/// at relative rate cfg.growth_rate per unit time, keeping the kinetic temperature. E is an
-/// edmd::Engine (engine.hpp): it uses temperature, collisions, set_debug, restart,
-/// diameter_scale, max_scale_for_cells, run_until, time, packing and check_overlaps.
+/// at relative rate cfg.growth_rate per unit time, keeping the kinetic temperature,
+/// elastically. E is an edmd::Engine (engine.hpp): it uses temperature, collisions,
+/// set_debug, restart, diameter_scale, max_scale_for_cells, run_until, time, packing,
+/// check_overlaps, restitution and set_restitution.
 template <class E>
 void compress(E& e, double target_scale, const Config& cfg) {
   if (!(cfg.growth_rate > 0.0)) throw InvalidInput("compression growth rate must be > 0");
+  struct Elastic {  // restitution 1 while compressing, restored however compress ends
+    E& e;
+    double alpha;
+    explicit Elastic(E& en) : e(en), alpha(en.restitution()) {
+      if (alpha < 1.0) e.set_restitution(1.0);
+    }
+    ~Elastic() {
+      if (alpha < 1.0) e.set_restitution(alpha);
+    }
+    Elastic(const Elastic&) = delete;
+    Elastic& operator=(const Elastic&) = delete;
+  } elastic(e);
   const double kT = e.temperature();
   const std::uint64_t c0 = e.collisions();
   // The O(N^2) debug check runs at every stage end here, not after every event.

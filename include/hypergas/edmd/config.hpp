@@ -34,6 +34,18 @@ struct Config {
   double growth_rate = 0.05;
   std::uint64_t max_compression_collisions = 200000000;
   double compression_stage = 0.5;  ///< time between velocity rescalings while compressing
+  /// Coefficient of normal restitution alpha in [0, 1]: 1 is the elastic hard-sphere gas,
+  /// below 1 a granular gas (restitution.hpp) that cools. The Lubachevsky–Stillinger
+  /// compression of the start is elastic; alpha applies from t = 0 of the run.
+  double restitution = 1.0;
+  /// TC model of inelastic collapse (Luding & McNamara 1998, restitution.hpp): a collision
+  /// is elastic when either particle's previous collision was less than tc_time ago
+  /// (>= 0; 0 turns the model off). In the engine's time unit (that of time() and
+  /// run_until: sigma sqrt(m/kT0) with the initial kT0 = 1 by default): a fixed time, as the
+  /// contact duration of real grains is, not a fraction of the mean free time, which grows
+  /// as the gas cools. The default 1e-5 is ~2e-5 of the initial mean free time at packing
+  /// 0.1 in 3D and ~4e-4 of it at packing 0.5. Unused while the restitution is 1.
+  double tc_time = 1e-5;
 };
 
 }  // namespace hypergas::edmd

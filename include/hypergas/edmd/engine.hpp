@@ -15,6 +15,18 @@
 // partner collided since) falls back to the runner-up or a new scan. Every
 // Config::reorder_interval collisions per particle the particles are renumbered in Z-order
 // (trajectories unchanged). Design and correctness: docs/design.md, "The EDMD event loop".
+//
+// Granular gas: Config::restitution = alpha < 1 makes every collision inelastic
+// (restitution.hpp), with the TC model against inelastic collapse (Config::tc_time; the
+// collisions it made elastic: tc_elastic_collisions()). The start's Lubachevsky–Stillinger
+// compression is elastic; set_restitution changes alpha during a run (e.g. a quench after
+// an elastic equilibration). alpha = 1 runs the elastic kernel exactly as without the
+// option (one predictable branch per collision); a granular collision leaves the pair
+// receding by more than round-off (keep_receding), so that alpha = 0 cannot make the same
+// pair collide again at the same instant without end. A cooling gas has no temperature to
+// measure a pressure against: pressure_Z and the Helfand tally (contacts()) refuse
+// alpha < 1 with InvalidInput; collision_rate, mean_free_time and temperature stay
+// measured quantities (means over the window, and the current kinetic temperature).
 #pragma once
 
 #include <algorithm>
@@ -33,6 +45,7 @@
 #include "hypergas/edmd/events.hpp"
 #include "hypergas/edmd/observables.hpp"
 #include "hypergas/edmd/prediction.hpp"
+#include "hypergas/edmd/restitution.hpp"
 #include "hypergas/edmd/scan.hpp"
 #include "hypergas/edmd/snapshot.hpp"
 #include "hypergas/edmd/state.hpp"
@@ -67,9 +80,11 @@ class Engine {
                          : ~std::uint64_t{0};
     rebuild();
     if (s_.scale_ref < 1.0) {
-      compress(*this, 1.0, cfg);
+      compress(*this, 1.0, cfg);  // elastic: alpha_ is 1 until set below
       restart_clock();  // the compression is preparation: the run starts at t = 0
     }
+    tc_ = cfg.tc_time;
+    set_restitution(cfg.restitution);
     reset_observables();
   }
 
@@ -85,7 +100,8 @@ class Engine {
   template <class Archive>
   void io(Archive& a) {
     a.tag(identity());
-    a(static_cast<State<D, F>&>(s_), scanner_, q_, win_, reorder_every_, next_reorder_, cfg_);
+    a(static_cast<State<D, F>&>(s_), scanner_, q_, win_, reorder_every_, next_reorder_, cfg_,
+      alpha_, tc_);
   }
   /// "edmd D=3 scan=horizon species=0 masses=0 radii=0": what a checkpoint must match
   /// (docs/checkpoints.md; particles have neither masses nor radii of their own).
@@ -120,6 +136,7 @@ class Engine {
       if (te > t) break;
       // an observer may install a Helfand tally at a sample: the loop then changes kernel
       if (contacts_.helfand) [[unlikely]] {
+        refuse_tally_if_granular();
         events_until<true>(t, next_sample);
       } else {
         events_until<false>(t, next_sample);
@@ -132,14 +149,43 @@ class Engine {
   void observe(Observer& obs) const { sample(s_.now, obs); }
   /// Processes exactly one event (a collision, a cell crossing or a re-prediction).
   void step() {
-    if (contacts_.helfand) step_event<true>();
-    else step_event<false>();
+    if (contacts_.helfand) {
+      refuse_tally_if_granular();
+      step_event<true>();
+    } else {
+      step_event<false>();
+    }
   }
 
   /// The Helfand tally's slot (tally/helfand.hpp): a recorder installs a tally through a
   /// snapshot (Snapshot::contacts), and every later collision updates it. Not state: a
-  /// checkpoint holds no tally.
+  /// checkpoint holds no tally. An equilibrium transport measurement: with restitution < 1
+  /// the next run_until or step throws InvalidInput while a tally is installed.
   tally::ContactSlot& contacts() const { return contacts_; }
+
+  // ---- granular gas (restitution.hpp) --------------------------------------------------
+  /// Coefficient of normal restitution in effect (1: elastic).
+  double restitution() const { return alpha_; }
+  /// Sets the restitution for the collisions from now on; returns the previous value.
+  /// Throws InvalidInput unless alpha is finite and in [0, 1]. Going from 1 to below 1
+  /// starts the TC clocks afresh: no particle counts as having collided before.
+  double set_restitution(double alpha) {
+    check_restitution(alpha);
+    const double old = alpha_;
+    if (alpha < 1.0 && (old == 1.0 || s_.t_last.size() != size()))
+      s_.t_last.assign(size(), -never);
+    alpha_ = alpha;
+    return old;
+  }
+  /// The TC model's t_c (Config::tc_time), time units.
+  double tc_time() const { return tc_; }
+  /// Sets t_c for the collisions from now on; throws InvalidInput unless finite and >= 0.
+  void set_tc_time(double tc) {
+    check_tc_time(tc);
+    tc_ = tc;
+  }
+  /// Collisions the TC rule made elastic since the start (counted while alpha < 1).
+  std::uint64_t tc_elastic_collisions() const { return s_.ntc; }
 
  private:
   /// Processes the events due at or before t and before `sample` (an event at the instant
@@ -205,7 +251,8 @@ class Engine {
   double box_side() const { return s_.L; }
   /// Packing fraction at the current diameters.
   double packing() const { return s_.packing(); }
-  /// Kinetic temperature kT = sum m v^2 / (D N) (energy units).
+  /// Kinetic temperature kT = sum m v^2 / (D N) (energy units); in a granular gas the
+  /// granular temperature, falling with time.
   double temperature() const {
     return 2.0 * kinetic_energy() / (D * static_cast<double>(size()));
   }
@@ -224,8 +271,15 @@ class Engine {
   /// Collisions in the current window.
   std::uint64_t window_collisions() const { return win_.collisions(s_.ncoll); }
   /// Reduced pressure Z = PV/(N kT) = 1 + sum_coll r_ij . dp_i / (D N kT t) over the window.
-  double pressure_Z() const { return win_.pressure_Z(D, size(), temperature(), s_.now); }
-  /// Collisions per particle per unit time in the window (2 per collision).
+  /// An equilibrium measurement: throws InvalidInput while the restitution is below 1.
+  double pressure_Z() const {
+    if (alpha_ < 1.0)
+      throw InvalidInput("pressure_Z: a granular gas (restitution " + std::to_string(alpha_) +
+                         " < 1) cools; Z = PV/(N kT) needs equilibrium");
+    return win_.pressure_Z(D, size(), temperature(), s_.now);
+  }
+  /// Collisions per particle per unit time in the window (2 per collision); in a cooling
+  /// granular gas the mean over the window.
   double collision_rate() const { return win_.collision_rate(size(), s_.ncoll, s_.now); }
   /// Mean free time per particle, 1 / collision_rate (sigma sqrt(m/kT)).
   double mean_free_time() const { return 1.0 / collision_rate(); }
@@ -258,7 +312,8 @@ class Engine {
   double bytes_per_particle() const {
     return s_.p.bytes_per_particle() + D * sizeof(std::int32_t) + sizeof(Ev) +
            3 * sizeof(std::uint32_t) + CalendarQueue::bytes_per_particle() +
-           s_.cells.bytes_per_particle(size()) + scanner_.bytes_per_particle(s_);
+           s_.cells.bytes_per_particle(size()) + scanner_.bytes_per_particle(s_) +
+           (s_.t_last.empty() ? 0.0 : sizeof(double));
   }
   int cells_per_side() const { return s_.cells.per_side(); }
   /// Current diameter scale (1 after compression).
@@ -287,8 +342,9 @@ class Engine {
     for (std::uint32_t i = 0; i < size(); ++i) s_.advance(i);
     s_.scale_ref = diameter_scale();
     for (std::size_t i = 0; i < size(); ++i) s_.p.local_time(i) = 0.0;
+    for (double& t : s_.t_last) t -= s_.now;  // TC clocks: the same intervals
     s_.now = s_.t_scale = 0.0;
-    s_.ncoll = s_.ncross = s_.nstale = s_.npairs = s_.nscan = next_reorder_ = 0;
+    s_.ncoll = s_.ncross = s_.nstale = s_.npairs = s_.nscan = s_.ntc = next_reorder_ = 0;
     rebuild();
   }
   /// Turns the per-event all-pairs overlap check on or off; returns the previous setting.
@@ -378,7 +434,11 @@ class Engine {
     const double wi = s.p.inv_mass(i), wj = s.p.inv_mass(j);
     const Vec<D> vi0 = s.p.velocity(i);
     [[maybe_unused]] const Vec<D> vj0 = s.p.velocity(j);
-    detail::collide_unchecked<D>(s.p.velocity(i), s.p.velocity(j), wi, wj, n);
+    if (alpha_ < 1.0) [[unlikely]] {
+      collide_granular(i, j, wi, wj, n);
+    } else {
+      detail::collide_unchecked<D>(s.p.velocity(i), s.p.velocity(j), wi, wj, n);
+    }
     if (s.rate != 0.0) {  // LS: separate at least as fast as the contact distance grows
       const double a = 2.0 * s.base_contact(i, j) * s.rate;
       s.p.velocity(i) += (a * wi / (wi + wj)) * n;
@@ -393,6 +453,22 @@ class Engine {
     ++s.cnt[i];
     ++s.cnt[j];
     ++s.ncoll;
+  }
+
+  /// The velocity update of a granular collision of i and j (at now, unit normal n from j
+  /// to i): inelastic with alpha_, or elastic by the TC rule if either particle collided
+  /// less than tc_ ago (never when tc_ = 0); the pair is left receding (keep_receding).
+  /// Out of line, so that the elastic event loop's code stays as compact as without it.
+  [[gnu::noinline]] void collide_granular(std::uint32_t i, std::uint32_t j, double wi,
+                                          double wj, const Vec<D>& n) {
+    State<D, F>& s = s_;
+    double a = alpha_;
+    double& ti = s.t_last[i];
+    double& tj = s.t_last[j];
+    if (s.now - ti < tc_ || s.now - tj < tc_) a = 1.0, ++s.ntc;
+    ti = tj = s.now;
+    collide_inelastic<D>(s.p.velocity(i), s.p.velocity(j), wi, wj, n, a);
+    keep_receding<D>(s.p.velocity(i), s.p.velocity(j), wi, wj, n);
   }
 
   void cross(std::uint32_t i) {
@@ -457,6 +533,7 @@ class Engine {
     permute_records(s.cnt, from, 1);
     permute_records(s.ev, from, 1);
     permute_records(s.id, from, 1);
+    if (!s.t_last.empty()) permute_records(s.t_last, from, 1);
     scanner_.permute(from);
     for (std::uint32_t i = 0; i < n; ++i) {
       Ev& e = s.ev[i];
@@ -472,6 +549,12 @@ class Engine {
     q_.build(keys);
   }
 
+  void refuse_tally_if_granular() const {
+    if (alpha_ < 1.0)
+      throw InvalidInput("the Helfand tally measures equilibrium transport; the gas has "
+                         "restitution " + std::to_string(alpha_) + " < 1");
+  }
+
   /// Observes the state at time ts (>= every local clock) in the original numbering
   /// (snapshot.hpp).
   void sample(double ts, Observer& obs) const { observe_state(s_, ts, obs, &contacts_); }
@@ -484,6 +567,8 @@ class Engine {
   std::uint64_t reorder_every_ = 0, next_reorder_ = 0;  // renumbering period (collisions)
   bool debug_ = false;
   Config cfg_;
+  double alpha_ = 1.0;  // restitution in effect (1 while compressing the start)
+  double tc_ = 0.0;     // TC model's t_c
   mutable tally::ContactSlot contacts_;  // the Helfand tally, if a recorder installed one
 };
 

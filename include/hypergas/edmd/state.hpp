@@ -1,7 +1,8 @@
 // hypergas/edmd/state.hpp -- the state of an EDMD run that the event loop and the neighbour
 // scans share: particles (each at its own local time), periodic images, collision counters,
 // predicted events, original numbering, the cell grid, the clock, the diameter scale, and
-// the event counters.
+// the event counters, and for granular runs (restitution < 1) each particle's time of last
+// collision (TC model, restitution.hpp).
 //
 // Memory: position, clock and velocity of a particle are one record (one cache line in 3D,
 // particles.hpp). The diameter scale is scale_ref + rate (now - t_scale): 1 in a run, growing
@@ -22,6 +23,7 @@
 #include "hypergas/edmd/events.hpp"
 #include "hypergas/edmd/lattice.hpp"
 #include "hypergas/edmd/pair_time.hpp"
+#include "hypergas/edmd/restitution.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/geometry.hpp"
 #include "hypergas/initial_state.hpp"
@@ -41,11 +43,15 @@ struct State {
   std::vector<std::uint32_t> cnt;   // per-particle collision counters
   std::vector<Ev> ev;
   std::vector<std::uint32_t> id, slot;  // original id of each slot, and its inverse
+  // Time of each particle's last collision while the restitution is below 1 (-inf: none
+  // since dissipation was switched on); empty in elastic runs. Per slot, like cnt.
+  std::vector<double> t_last;
   Cells<D> cells;
   double L = 0.0, max_base = 1.0;
   double now = 0.0;
   double scale_ref = 1.0, t_scale = 0.0, rate = 0.0;
   std::uint64_t ncoll = 0, ncross = 0, nstale = 0, npairs = 0, nscan = 0;
+  std::uint64_t ntc = 0;  // collisions made elastic by the TC rule
 
   /// Places cfg.n particles on a lattice at packing cfg.packing with velocities of state
   /// cfg.init, at time 0 with no events; sets the diameter scale the lattice allows (1, or
@@ -54,6 +60,8 @@ struct State {
   void setup(const Config& cfg) {
     if (cfg.n < 2) throw InvalidInput("EDMD needs at least 2 particles");
     if (cfg.n > 0xFFFFFFF0ull) throw InvalidInput("EDMD: too many particles");
+    check_restitution(cfg.restitution);
+    check_tc_time(cfg.tc_time);
     if constexpr (D >= 2) check_packing(D, cfg.packing);
     else if (!(cfg.packing > 0.0 && cfg.packing < 1.0))
       throw InvalidInput("1D packing fraction must be in (0, 1)");
@@ -95,6 +103,8 @@ struct State {
     a.tag("edmd-state");
     a(p, image, cnt, ev, id, slot, cells, L, max_base, now, scale_ref, t_scale, rate, ncoll,
       ncross, nstale, npairs, nscan);
+    a.tag("edmd-granular");
+    a(t_last, ntc);
   }
 
   std::size_t size() const { return p.size(); }

@@ -14,6 +14,12 @@
 //   ks_p_speed               KS p-value of the speeds against MB at kT (see below)
 //   chi2_p_speed             chi-square p-value of the speed histogram (1 fitted parameter)
 //   kT_0, kT_1, ...          per-species temperature, energy units (mixtures only)
+//   a2, a3                   Sonine cumulants of the pooled speeds (0 for MB):
+//                            a2 = D/(D+2) m4/m2^2 - 1,
+//                            a3 = 1 + 3 a2 - D^2/((D+2)(D+4)) m6/m2^3
+//   T                        kT of the true velocities: kT exp(2 log_velocity_scale) (a
+//                            cooling granular gas stores scaled ones; else T = kT)
+//   real_time                Snapshot::real_time, or time where it is NaN
 // Pooled speeds are mass-weighted (see sample.hpp). The recorder keeps the speed histograms
 // of the last snapshot (pooled and, for mixtures, per species) for speed_histogram.csv.
 //

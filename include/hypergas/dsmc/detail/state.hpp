@@ -93,6 +93,14 @@ struct State {
   std::uint64_t check_failures = 0;
   std::array<double, max_species> species_w{};  // the observers' species mass table
   tally::Slot tally;      // the collision-level observer's tally, if one was installed
+  // Granular gases (dsmc/granular.hpp). impulse = (1 + alpha) / 2 scales each collision's
+  // change of relative velocity; the velocities are stored as v / scale with
+  // log_scale = ln(scale); real_time is the time in mean collision times at kT0.
+  double impulse = 1.0;
+  double log_scale = 0.0;
+  double real_time = 0.0;
+  double kT0 = 0.0;          // the equilibrium temperature of the initial energy
+  std::uint64_t kicks = 0;   // white-noise kicks so far (the next is at (kicks + 1) drive_dt)
 
   /// Candidate K: its pair and acceptance uniform (candidates.hpp).
   void draw(std::uint64_t K, std::uint32_t& i, std::uint32_t& j, double& u) const {
@@ -135,7 +143,17 @@ struct State {
     Vec<D> delta;
     if constexpr (Outlined) delta = deflect_outlined(g, gn, rng_k) - g;
     else delta = Model::template deflect<D>(g, gn, rng_k) - g;
-    if constexpr (Hook::active) {
+    if (impulse != 1.0) [[unlikely]] {  // inelastic: the impulse scaled by (1 + alpha) / 2
+      delta *= impulse;
+      const Vec<D> oi = vi, oj = vj;
+      hypergas::detail::exchange_relative<D, !F.species>(vi, vj, p.inv_mass(i), p.inv_mass(j),
+                                                          delta);
+      if constexpr (Hook::active) {
+        hook.collided(p, i, j, oi.data(), oj.data(), vi.data(), vj.data());
+        if constexpr (requires { hook.at_candidate(K, i, j, oi.data(), oj.data()); })
+          hook.at_candidate(K, i, j, oi.data(), oj.data());
+      }
+    } else if constexpr (Hook::active) {
       const Vec<D> oi = vi, oj = vj;
       apply_deflection<D>(p, i, j, vi, vj, delta);
       hook.collided(p, i, j, oi.data(), oj.data(), vi.data(), vj.data());

@@ -16,6 +16,7 @@
 #include "hypergas/dsmc/detail/lane.hpp"
 #include "hypergas/dsmc/detail/parallel.hpp"
 #include "hypergas/dsmc/detail/state.hpp"
+#include "hypergas/dsmc/granular.hpp"
 
 namespace hypergas::dsmc::detail {
 
@@ -102,8 +103,10 @@ template <int D, class Model, Features F>
 void advance_exact(State<D, Model, F>& s, ParallelBlocks& blocks,
                    const std::function<void()>& poll, double t_end) {
   while (s.time < t_end) {
+    granular_upkeep(s);
     retune(s, false);
-    double h = t_end - s.time;
+    const double target = std::min(t_end, next_kick(s));  // t_end without a drive
+    double h = target - s.time;
     const double hmax = 2.0 * s.n / s.lambda;  // epochs of ~2N candidates
     const bool capped = h > hmax;
     if (capped) h = hmax;
@@ -116,18 +119,19 @@ void advance_exact(State<D, Model, F>& s, ParallelBlocks& blocks,
     const bool raised = s.raise_to != 0.0;
     // a raise stops the epoch at its candidate, the m-th included (raise_to is set)
     if (s.raise_to == 0.0) {
-      s.time = capped ? s.time + h : t_end;
+      s.time = capped ? s.time + h : target;
     } else {
       // k-th of m uniform order statistics on [time, time + h].
       std::gamma_distribution<double> ga(static_cast<double>(k)),
           gb(static_cast<double>(m - k + 1));
       const double x = ga(s.rng), y = gb(s.rng);
-      s.time = std::min(s.time + h * (x / (x + y)), t_end);
+      s.time = std::min(s.time + h * (x / (x + y)), target);
       s.bound.set(s.raise_to);
       s.raise_to = 0.0;
       set_lambda(s);
     }
     end_epoch(s, t0, first, k, raised);
+    granular_after(s, t0);
     if (poll) poll();
   }
 }
@@ -138,10 +142,12 @@ template <int D, class Model, Features F>
 void advance_ntc(State<D, Model, F>& s, ParallelBlocks& blocks,
                  const std::function<void()>& poll, double t_end) {
   while (s.time < t_end) {
+    granular_upkeep(s);
     retune(s, false);
+    const double target = std::min(t_end, next_kick(s));  // t_end without a drive
     double h = s.cfg.dt;
-    const bool last = h >= t_end - s.time;
-    if (last) h = t_end - s.time;
+    const bool last = h >= target - s.time;
+    if (last) h = target - s.time;
     const auto m = static_cast<std::uint64_t>(std::floor(s.lambda * h + s.rng.uniform()));
     const double t0 = s.time;
     const std::uint64_t first = s.candidates;
@@ -152,8 +158,9 @@ void advance_ntc(State<D, Model, F>& s, ParallelBlocks& blocks,
       s.raise_to = 0.0;
       set_lambda(s);
     }
-    s.time = last ? t_end : s.time + h;
+    s.time = last ? target : s.time + h;
     end_epoch(s, t0, first, m, false);
+    granular_after(s, t0);
     if (poll) poll();
   }
 }

@@ -28,6 +28,10 @@ struct RunOptions {
   bool json = false;           ///< the command prints summary.json's object last
   std::string model;           ///< DSMC collision model (registry::Models)
   double vhs_exponent = 0.0;   ///< VHS rate exponent a (rate ~ |g|^a)
+  double restitution = 1.0;    ///< coefficient of normal restitution alpha
+  std::string drive;           ///< DSMC energy input: "none" or "white-noise"
+  double drive_dt = 0.0;       ///< DSMC: interval between white-noise kicks
+  double tc_time = 0.0;        ///< EDMD: TC-model time (collisions this close are elastic)
   std::string init;            ///< initial state name (registry::initial_states)
   double until = 0.0;          ///< end time
   double every = 0.0;          ///< requested sampling interval (0: not given; Schedule)
@@ -85,6 +89,11 @@ void check_dim(int d, const std::string& option);
 void check_n(long long n, const std::string& option);
 void check_threads(long long t, const std::string& option);
 void check_start_packing(double start, double packing);
+
+/// "none" / "white-noise" and the DSMC drive they name; throws InvalidInput for another
+/// name.
+dsmc::Drive drive_kind(std::string_view name);
+std::string_view drive_name(dsmc::Drive d);
 
 /// Parses the whole of `text` as a T for `option`, or throws InvalidInput naming the option
 /// and the text: doubles in decimal or scientific notation (nan and inf parse; ranges refuse

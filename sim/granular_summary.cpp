@@ -1,0 +1,112 @@
+// sim/granular_summary.cpp -- the summary keys of a granular run (granular_summary.hpp).
+#include "granular_summary.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "hypergas/granular/theory.hpp"
+#include "hypergas/studies/statistics.hpp"
+
+namespace hypergas::cli {
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+constexpr std::size_t blocks = 8;
+
+/// Least-squares slope of y against x over [b, e).
+double slope(const std::vector<double>& x, const std::vector<double>& y, std::size_t b,
+             std::size_t e) {
+  double sx = 0.0, sy = 0.0;
+  const double k = static_cast<double>(e - b);
+  for (std::size_t i = b; i < e; ++i) sx += x[i], sy += y[i];
+  const double mx = sx / k, my = sy / k;
+  double sxy = 0.0, sxx = 0.0;
+  for (std::size_t i = b; i < e; ++i) {
+    sxy += (x[i] - mx) * (y[i] - my);
+    sxx += (x[i] - mx) * (x[i] - mx);
+  }
+  return sxx > 0.0 ? sxy / sxx : nan;
+}
+
+/// Mean and standard error over `blocks` consecutive blocks of rows [b, e) of f(block b, e).
+template <class F>
+studies::MeanSe over_blocks(std::size_t b, std::size_t e, F f) {
+  std::vector<double> v;
+  const std::size_t len = (e - b) / blocks;
+  for (std::size_t k = 0; k < blocks; ++k) v.push_back(f(b + k * len, b + (k + 1) * len));
+  return studies::mean_se(v);
+}
+
+}  // namespace
+
+void add_granular_summary(analysis::JsonObject& summary, const analysis::MomentsRecorder& m,
+                          const GranularRun& run, bool dsmc_time_unit) {
+  const std::vector<double> a2 = m.column("a2"), a3 = m.column("a3"), T = m.column("T"),
+                            t = m.column("real_time"), cpp = m.column("collisions_per_particle");
+  const std::size_t n = T.size();
+  const double alpha = run.restitution;
+  const int d = run.dim;
+  const auto put = [&](const std::string& k, double v) { summary.emplace_back(k, v); };
+  put("restitution", alpha);
+  put("temperature_ratio", n > 0 ? T.back() / T.front() : nan);
+  const bool enough = n >= 2 * blocks && d >= 2;
+  const std::size_t b = n / 2;
+  const auto mean_of = [&](const std::vector<double>& y) {
+    return over_blocks(b, n, [&](std::size_t i, std::size_t e) {
+      double s = 0.0;
+      for (std::size_t j = i; j < e; ++j) s += y[j];
+      return s / static_cast<double>(e - i);
+    });
+  };
+  const studies::MeanSe a2m = enough ? mean_of(a2) : studies::MeanSe{nan, nan};
+  const studies::MeanSe a3m = enough ? mean_of(a3) : studies::MeanSe{nan, nan};
+  put("a2_mean", a2m.mean);
+  put("a2_error", a2m.se);
+  put("a3_mean", a3m.mean);
+  put("a3_error", a3m.se);
+  const double a2s = !run.hard_spheres || d < 2 ? nan
+                     : run.driven               ? granular::a2_white_noise(alpha, d)
+                                                : granular::a2_hcs(alpha, d);
+  put("a2_sonine", a2s);
+  std::vector<double> lnT;
+  for (const double x : T) lnT.push_back(std::log(x));
+  const studies::MeanSe cool =
+      enough && !run.driven ? over_blocks(b, n, [&](std::size_t i, std::size_t e) {
+        return -slope(cpp, lnT, i, e);
+      })
+                            : studies::MeanSe{nan, nan};
+  put("cooling_per_collision", cool.mean);
+  put("cooling_per_collision_error", cool.se);
+  put("cooling_per_collision_sonine",
+      run.hard_spheres && d >= 2 && !run.driven
+          ? granular::cooling_rate(alpha, d, a2s) / granular::collision_frequency_ratio(a2s)
+          : nan);
+  if (!run.driven) {
+    std::vector<double> inv;
+    for (const double x : T) inv.push_back(1.0 / std::sqrt(x));
+    const studies::MeanSe haff =
+        enough ? over_blocks(b, n, [&](std::size_t i, std::size_t e) {
+          return 1.0 / (std::sqrt(T.front()) * slope(t, inv, i, e));
+        })
+               : studies::MeanSe{nan, nan};
+    put("haff_t0", haff.mean);
+    put("haff_t0_error", haff.se);
+    put("haff_t0_sonine", dsmc_time_unit && run.hard_spheres && d >= 2
+                              ? 2.0 / granular::cooling_rate(alpha, d, a2s)
+                              : nan);
+  } else {
+    const studies::MeanSe r = over_blocks(b, n, [&](std::size_t i, std::size_t e) {
+      double s = 0.0;
+      for (std::size_t j = i; j < e; ++j) s += T[j];
+      return s / static_cast<double>(e - i) / T.front();
+    });
+    put("temperature_ratio_mean", enough ? r.mean : nan);
+    put("temperature_ratio_error", enough ? r.se : nan);
+  }
+}
+
+}  // namespace hypergas::cli

@@ -29,7 +29,9 @@
 // T(t) = T0 / (1 + t / t0)^2. The temperature is kT = scale^2 kT(stored).
 //
 // The white-noise drive (hard spheres). Every particle receives the velocity kick
-// sqrt(xi2 drive_dt) N(0, 1) per component at the times k drive_dt of the engine's clock;
+// sqrt(xi2 drive_dt) N(0, 1) per component at the times (k + 1/2) drive_dt of the engine's
+// clock (midway between the multiples of drive_dt, where samples usually fall: there the
+// temperature's sawtooth between kicks is at its mean to first order in drive_dt);
 // the mass-weighted mean kick is subtracted, so the total momentum stays zero. xi2 is
 // chosen so that the first Sonine energy balance holds at kT0: the energy put in per
 // particle and unit time, D xi2 / 2 (unit mass), equals the loss zeta kT0 D / 2 with
@@ -141,11 +143,11 @@ void kick(State<D, Model, F>& s) {
   s.since_scan = 0;
 }
 
-/// Time of the next kick, or +infinity without a drive.
+/// Time of the next kick ((kicks + 1/2) drive_dt), or +infinity without a drive.
 template <int D, class Model, Features F>
 double next_kick(const State<D, Model, F>& s) {
   if (s.cfg.drive == Drive::none) return HUGE_VAL;
-  return static_cast<double>(s.kicks + 1) * s.cfg.drive_dt;
+  return (static_cast<double>(s.kicks) + 0.5) * s.cfg.drive_dt;
 }
 
 /// Before an epoch or step: the renormalisation of a cooling gas when it is due.

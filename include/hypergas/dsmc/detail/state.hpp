@@ -100,7 +100,7 @@ struct State {
   double log_scale = 0.0;
   double real_time = 0.0;
   double kT0 = 0.0;          // the equilibrium temperature of the initial energy
-  std::uint64_t kicks = 0;   // white-noise kicks so far (the next is at (kicks + 1) drive_dt)
+  std::uint64_t kicks = 0;   // white-noise kicks so far (the next at (kicks + 1/2) drive_dt)
 
   /// Candidate K: its pair and acceptance uniform (candidates.hpp).
   void draw(std::uint64_t K, std::uint32_t& i, std::uint32_t& j, double& u) const {

@@ -4,9 +4,12 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <utility>
 #include <string>
 #include <vector>
 
+#include "hypergas/analysis/histogram.hpp"
+#include "hypergas/analysis/maxwell.hpp"
 #include "hypergas/granular/theory.hpp"
 #include "hypergas/studies/statistics.hpp"
 
@@ -39,6 +42,36 @@ studies::MeanSe over_blocks(std::size_t b, std::size_t e, F f) {
   const std::size_t len = (e - b) / blocks;
   for (std::size_t k = 0; k < blocks; ++k) v.push_back(f(b + k * len, b + (k + 1) * len));
   return studies::mean_se(v);
+}
+
+/// Slope A of ln(f / c^(D-1)) = b - A c over the bins of the last speed histogram with
+/// c = v / v_T >= 2 and at least 20 counts (weighted by the counts), for the measured
+/// density and for the Maxwellian of the same bins; NaN without 3 such bins.
+std::pair<double, double> tail_slopes(const analysis::MomentsRecorder& m, int d) {
+  const analysis::Histogram& h = m.last_histogram();
+  const analysis::MaxwellReference& ref = m.last_reference();
+  const double vt = std::sqrt(2.0 * ref.kT / ref.mass);
+  std::vector<double> c, y, ym, w;
+  for (std::size_t i = 0; i < h.bins(); ++i) {
+    const double lo = h.lower(i) / vt, hi = h.upper(i) / vt, mid = 0.5 * (lo + hi);
+    if (lo < 2.0 || h.count(i) < 20.0) continue;
+    c.push_back(mid);
+    y.push_back(std::log(h.density(i)) - (d - 1) * std::log(mid));
+    ym.push_back(std::log(analysis::bin_density(ref, h.lower(i), h.upper(i))) -
+                 (d - 1) * std::log(mid));
+    w.push_back(h.count(i));
+  }
+  if (c.size() < 3) return {nan, nan};
+  const auto fit = [&](const std::vector<double>& yy) {
+    double sw = 0.0, sx = 0.0, sy = 0.0;
+    for (std::size_t i = 0; i < c.size(); ++i) sw += w[i], sx += w[i] * c[i], sy += w[i] * yy[i];
+    const double mx = sx / sw, my = sy / sw;
+    double sxy = 0.0, sxx = 0.0;
+    for (std::size_t i = 0; i < c.size(); ++i)
+      sxy += w[i] * (c[i] - mx) * (yy[i] - my), sxx += w[i] * (c[i] - mx) * (c[i] - mx);
+    return -sxy / sxx;
+  };
+  return {fit(y), fit(ym)};
 }
 
 }  // namespace
@@ -85,6 +118,9 @@ void add_granular_summary(analysis::JsonObject& summary, const analysis::Moments
       run.hard_spheres && d >= 2 && !run.driven
           ? granular::cooling_rate(alpha, d, a2s) / granular::collision_frequency_ratio(a2s)
           : nan);
+  const auto [tail, tail_mb] = n > 0 ? tail_slopes(m, d) : std::pair<double, double>{nan, nan};
+  put("tail_slope", tail);
+  put("tail_slope_maxwell", tail_mb);
   if (!run.driven) {
     std::vector<double> inv;
     for (const double x : T) inv.push_back(1.0 / std::sqrt(x));

@@ -27,6 +27,10 @@ struct GranularRun {
 ///   HCS only: haff_t0(_error): 1 / (sqrt(T_first) d T^(-1/2) / d real_time), real_time's
 ///     unit, and (DSMC) haff_t0_sonine = 2 / zeta(T_first);
 ///   driven only: temperature_ratio_mean(_error): <T> / T_first over the second half.
+///   tail_slope: A of ln(f(c) / c^(D-1)) = b - A c fitted over the last speed histogram's
+///     bins with c = v / v_T >= 2 and at least 20 counts (an exponential tail exp(-A c) has
+///     a constant A), and tail_slope_maxwell: the same fit to the Maxwellian on those bins
+///     (its A grows with c as c + ...: a smaller measured A is an overpopulated tail).
 void add_granular_summary(analysis::JsonObject& summary, const analysis::MomentsRecorder& m,
                           const GranularRun& run, bool dsmc_time_unit);
 

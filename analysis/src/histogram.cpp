@@ -161,15 +161,36 @@ double bin_density(const MaxwellReference& ref, double lo, double hi) {
   return p / (hi - lo);
 }
 
-void write_histogram_csv(const std::string& path, const Histogram& h, const MaxwellReference& ref) {
+double sonine_bin_density(const MaxwellReference& ref, double a2, double lo, double hi) {
+  // Simpson's rule on 32 intervals of the bin: the density is smooth on a bin
+  const int m = 32;
+  const double h = (hi - lo) / m;
+  const double d = ref.dim;
+  double s = 0.0;
+  for (int k = 0; k <= m; ++k) {
+    const double v = lo + h * k;
+    const double x = 0.5 * ref.mass * v * v / ref.kT;  // c^2 = v^2 / v_T^2
+    const double s2 = 0.5 * x * x - 0.5 * (d + 2.0) * x + d * (d + 2.0) / 8.0;
+    const double f = ref.pdf(v) * (1.0 + a2 * s2);
+    s += f * (k == 0 || k == m ? 1.0 : (k % 2 ? 4.0 : 2.0));
+  }
+  return s * h / 3.0 / (hi - lo);
+}
+
+void write_histogram_csv(const std::string& path, const Histogram& h, const MaxwellReference& ref,
+                         double a2) {
   ref.validate();
+  const bool sonine = std::isfinite(a2) && ref.quantity == Quantity::speed;
   std::vector<std::vector<double>> rows;
   rows.reserve(h.bins());
   for (std::size_t i = 0; i < h.bins(); ++i) {
     const double lo = h.lower(i), hi = h.upper(i);
     rows.push_back({lo, hi, h.count(i), h.density(i), bin_density(ref, lo, hi)});
+    if (sonine) rows.back().push_back(sonine_bin_density(ref, a2, lo, hi));
   }
-  write_csv(path, {"lo", "hi", "count", "density", "maxwell_density"}, rows);
+  std::vector<std::string> cols = {"lo", "hi", "count", "density", "maxwell_density"};
+  if (sonine) cols.push_back("sonine_density");
+  write_csv(path, cols, rows);
 }
 
 }  // namespace hypergas::analysis

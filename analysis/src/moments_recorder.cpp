@@ -475,7 +475,10 @@ const MaxwellReference& MomentsRecorder::last_reference(int species) const {
 
 void MomentsRecorder::write_speed_histogram_csv(const std::string& path, int species) const {
   const std::size_t k = histogram_index(species, path);
-  write_histogram_csv(path, last_histograms_[k], last_refs_[k]);
+  // the first Sonine form with the last row's a2 of the pooled speeds (one species: the
+  // scaled HCS or driven state of a granular gas against its Sonine form)
+  const double a2 = n_species_ == 1 ? rows_.back()[n_common_columns] : NAN;
+  write_histogram_csv(path, last_histograms_[k], last_refs_[k], a2);
 }
 
 void MomentsRecorder::check_restored() const {

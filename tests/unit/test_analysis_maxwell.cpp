@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 
+#include "hypergas/analysis/histogram.hpp"
 #include "hypergas/analysis/maxwell.hpp"
 #include "hypergas/error.hpp"
 
@@ -110,4 +111,27 @@ TEST_CASE("MB reference rejects bad parameters", "[analysis]") {
   CHECK_THROWS_AS((MaxwellReference{Quantity::speed, 3, -1.0, 1.0}.validate()), InvalidInput);
   CHECK_THROWS_AS((MaxwellReference{Quantity::speed, 3, 1.0, NAN}.validate()), InvalidInput);
   CHECK_THROWS_AS((MaxwellReference{Quantity::speed, 3, 1.0, 1.0}.quantile(1.0)), InvalidInput);
+}
+
+TEST_CASE("First Sonine speed density: normalised, with <v^4> = (1 + a2) D(D+2) (kT/m)^2",
+          "[analysis]") {
+  // Sum over bins of width 0.01 up to 12 sqrt(kT/m) (Simpson within each bin): the
+  // S2 term integrates to 0 against the Maxwellian and adds a2 D(D+2) (kT/m)^2 to <v^4>.
+  for (const int d : {2, 3, 6}) {
+    const hypergas::analysis::MaxwellReference ref{hypergas::analysis::Quantity::speed, d, 1.7, 2.0};
+    const double a2 = 0.1, w = 0.01 * std::sqrt(ref.kT / ref.mass);
+    double norm = 0.0, m4 = 0.0, plain = 0.0;
+    for (int i = 0; i < 1200; ++i) {
+      const double lo = i * w, hi = lo + w, v = lo + 0.5 * w;
+      const double f = hypergas::analysis::sonine_bin_density(ref, a2, lo, hi);
+      norm += f * w;
+      m4 += f * w * v * v * v * v;
+      plain += hypergas::analysis::sonine_bin_density(ref, 0.0, lo, hi) * w;
+    }
+    const double t = ref.kT / ref.mass;
+    CHECK(norm == Approx(1.0).epsilon(1e-6));
+    CHECK(plain == Approx(1.0).epsilon(1e-6));
+    // midpoint moments of bins of 0.01: relative error ~ (w/v)^2, 1e-4
+    CHECK(m4 == Approx((1.0 + a2) * d * (d + 2) * t * t).epsilon(1e-3));
+  }
 }

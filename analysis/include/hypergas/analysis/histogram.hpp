@@ -8,6 +8,7 @@
 // overflow) through a checkpoint archive (hypergas/checkpoint.hpp).
 #pragma once
 
+#include <limits>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -96,6 +97,12 @@ double bin_density(const MaxwellReference& ref, double lo, double hi);
 /// Writes `h` as CSV `lo,hi,count,density,maxwell_density` (atomically): bin edges (units
 /// of x), counts, the histogram density and the reference's mean density over each bin
 /// (both 1 / units of x).
-void write_histogram_csv(const std::string& path, const Histogram& h, const MaxwellReference& ref);
+/// With a finite `a2` and a speed reference, also the column sonine_density: the bin
+/// average of the first Sonine form pdf(v) (1 + a2 S2(c^2)), c^2 = m v^2 / (2 kT),
+/// S2(x) = x^2/2 - (D+2) x/2 + D(D+2)/8 (granular/theory.hpp).
+void write_histogram_csv(const std::string& path, const Histogram& h, const MaxwellReference& ref,
+                         double a2 = std::numeric_limits<double>::quiet_NaN());
+/// The bin average over [lo, hi] of the first Sonine speed density with coefficient a2.
+double sonine_bin_density(const MaxwellReference& ref, double a2, double lo, double hi);
 
 }  // namespace hypergas::analysis

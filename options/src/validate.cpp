@@ -147,6 +147,9 @@ void validate_granular(const RunOptions& o) {
   if (driven && o.restitution == 1.0)
     bad("--drive white-noise needs --restitution < 1 (an elastic gas driven by noise heats "
         "without bound)");
+  if (driven && o.dim < 2)
+    bad("--drive white-noise needs --dim >= 2 (its strength comes from the Sonine theory of "
+        "D >= 2)");
   if (driven && o.model != dsmc::HardSpheres::name)
     bad(fmt::format("--drive white-noise is defined for --model {} only, not --model {}",
                     dsmc::HardSpheres::name, o.model));

@@ -228,8 +228,46 @@ class DSMC(_Engine):
 
     @property
     def temperature(self):
-        """Kinetic temperature 2 E_kin / (D n), energy units."""
-        return 2.0 * self.kinetic_energy / (self.dim * self.n)
+        """Kinetic temperature 2 E_kin / (D n) of the true velocities, energy units.
+
+        A freely cooling granular gas (``restitution`` < 1, no drive) stores scaled
+        velocities (see ``log_velocity_scale``): this is the temperature of the gas, not
+        of the stored velocities.
+        """
+        scale = math.exp(2.0 * self.log_velocity_scale)
+        return 2.0 * self.kinetic_energy / (self.dim * self.n) * scale
+
+    # ---- granular gas -------------------------------------------------------------
+    @property
+    def restitution(self):
+        """Coefficient of normal restitution alpha (1: elastic)."""
+        return _hypergas.dsmc_granular(self._h)["restitution"]
+
+    @property
+    def real_time(self):
+        """Time in mean collision times at the initial temperature.
+
+        Equals ``time`` except in a freely cooling granular gas (``restitution`` < 1, no
+        drive), whose ``time`` counts mean collision times at the current temperature, so
+        that it advances at a constant collision rate while the gas cools (Haff's law in
+        ``real_time``: T = T0 / (1 + real_time / t0)^2).
+        """
+        return _hypergas.dsmc_granular(self._h)["real_time"]
+
+    @property
+    def log_velocity_scale(self):
+        """ln of the factor from the stored to the true velocities.
+
+        A freely cooling granular gas is kept at its initial temperature in scaled
+        velocities: the true velocities are ``velocities * exp(log_velocity_scale)``, and
+        ``kinetic_energy`` and ``momentum`` are those of the stored ones. 0 otherwise.
+        """
+        return _hypergas.dsmc_granular(self._h)["log_velocity_scale"]
+
+    @property
+    def kicks(self):
+        """White-noise kicks so far (``drive="white-noise"``)."""
+        return _hypergas.dsmc_granular(self._h)["kicks"]
 
 
 class EDMD(_Engine):
@@ -294,7 +332,8 @@ class EDMD(_Engine):
     @property
     def pressure_Z(self):
         """Reduced pressure Z = PV/(N kT) from the collision virial since the last
-        reset_observables() (or the start)."""
+        reset_observables() (or the start); NaN while the gas is granular (restitution
+        below 1: no equilibrium)."""
         return self._observable("pressure_Z")
 
     @property
@@ -310,6 +349,33 @@ class EDMD(_Engine):
     def reset_observables(self):
         """Starts a new measurement window for pressure_Z and the collision rate."""
         _hypergas.reset_observables(self._h)
+
+    # ---- granular gas -------------------------------------------------------------
+    @property
+    def restitution(self):
+        """Coefficient of normal restitution in effect (1: elastic).
+
+        Settable: the collisions from then on use the new value (in [0, 1]). Unlike
+        ``hypergas run``, which equilibrates elastically for 20 % of --until and then
+        quenches, an engine built with ``restitution`` < 1 is inelastic from the start;
+        build it elastic, run it, and set ``restitution`` for the command's protocol.
+        """
+        return self._observable("restitution")
+
+    @restitution.setter
+    def restitution(self, alpha):
+        _hypergas.set_restitution(self._h, alpha)
+
+    @property
+    def tc_time(self):
+        """The TC model's time: a collision within it of either particle's previous one is
+        elastic (``tc_time`` argument)."""
+        return self._observable("tc_time")
+
+    @property
+    def tc_elastic_collisions(self):
+        """Collisions that the TC rule made elastic so far."""
+        return self._observable("tc_elastic_collisions")
 
 
 # ---- the constructors' arguments, from the command's option table -----------------------

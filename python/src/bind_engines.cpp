@@ -174,9 +174,25 @@ void bind_engines(py::module_& m) {
     const EdmdHandle& e = edmd_of(b);
     py::dict d;
     d["box_side"] = e.box_side(), d["packing"] = e.packing(), d["temperature"] = e.temperature();
-    d["pressure_Z"] = e.pressure_Z(), d["collision_rate"] = e.collision_rate();
+    // Z = PV/(N kT) is an equilibrium measurement: NaN while the gas is granular
+    d["pressure_Z"] = e.restitution() < 1.0 ? std::nan("") : e.pressure_Z();
+    d["collision_rate"] = e.collision_rate();
+    d["restitution"] = e.restitution(), d["tc_time"] = e.tc_time();
+    d["tc_elastic_collisions"] = e.tc_elastic_collisions();
     d["mean_free_time"] = e.mean_free_time();
     return d;
+  });
+  m.def("set_restitution", [](EngineBox& b, const py::object& alpha) {
+    b.idle();
+    return edmd_of(b).set_restitution(as_real("restitution", alpha));
+  });
+  m.def("dsmc_granular", [](const EngineBox& b) {
+    b.idle();
+    const DsmcHandle& d = dsmc_of(b);
+    py::dict g;
+    g["restitution"] = d.restitution(), g["real_time"] = d.real_time();
+    g["log_velocity_scale"] = d.log_velocity_scale(), g["kicks"] = d.kicks();
+    return g;
   });
   m.def("reset_observables", [](EngineBox& b) {
     b.idle();

@@ -68,6 +68,16 @@ class DsmcHandle : public EngineHandle {
   /// Candidate pairs tested so far.
   virtual std::uint64_t candidates() const = 0;
   virtual const char* model() const = 0;
+  /// Granular gas (dsmc/granular.hpp): the coefficient of normal restitution (1: elastic).
+  virtual double restitution() const = 0;
+  /// Time in mean collision times at the initial temperature (time() unless the gas cools
+  /// freely, whose time() counts mean collision times at its current temperature).
+  virtual double real_time() const = 0;
+  /// The stored velocities are the true ones divided by exp(log_velocity_scale()) (0 unless
+  /// the gas cools freely).
+  virtual double log_velocity_scale() const = 0;
+  /// White-noise kicks so far (drive white-noise).
+  virtual std::uint64_t kicks() const = 0;
 };
 
 /// The EDMD engine (periodic box).
@@ -87,6 +97,13 @@ class EdmdHandle : public EngineHandle {
   virtual double collision_rate() const = 0;
   virtual double mean_free_time() const = 0;
   virtual void reset_observables() = 0;
+  /// Granular gas (edmd/restitution.hpp): the restitution in effect, its setter (returns the
+  /// previous value; InvalidInput outside [0, 1]), the TC model's time and the collisions
+  /// its rule made elastic.
+  virtual double restitution() const = 0;
+  virtual double set_restitution(double alpha) = 0;
+  virtual double tc_time() const = 0;
+  virtual std::uint64_t tc_elastic_collisions() const = 0;
 };
 
 /// Given initial velocities for a DSMC engine: n rows of o.dim doubles, contiguous, and

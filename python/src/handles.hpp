@@ -85,6 +85,10 @@ class Dsmc final : public Common<dsmc::Engine<D, Model, Features{.species = Spec
   int threads() const override { return threads_; }
   std::uint64_t candidates() const override { return e_.candidates(); }
   const char* model() const override { return Model::name.data(); }
+  double restitution() const override { return e_.restitution(); }
+  double real_time() const override { return e_.real_time(); }
+  double log_velocity_scale() const override { return e_.log_velocity_scale(); }
+  std::uint64_t kicks() const override { return e_.kicks(); }
 
  private:
   int threads_ = 1;
@@ -137,6 +141,10 @@ class Edmd final
   double collision_rate() const override { return e_.collision_rate(); }
   double mean_free_time() const override { return e_.mean_free_time(); }
   void reset_observables() override { e_.reset_observables(); }
+  double restitution() const override { return e_.restitution(); }
+  double set_restitution(double alpha) override { return e_.set_restitution(alpha); }
+  double tc_time() const override { return e_.tc_time(); }
+  std::uint64_t tc_elastic_collisions() const override { return e_.tc_elastic_collisions(); }
 };
 
 /// Particles holding `given` (velocities, species with species-1 mass `mass_ratio`).

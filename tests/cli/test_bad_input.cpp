@@ -206,4 +206,47 @@ TEST_CASE("run --engine edmd --transport and --structure: bad combinations are r
   expect_rejected({"run", "--engine", "edmd", "--transport", "--until", "5"},
                   "shorter than two correlation windows");
 }
+
+TEST_CASE("run: granular options out of range or in the wrong combination are rejected",
+          "[cli]") {
+  for (const char* a : {"-0.1", "1.5", "nan", "inf"})
+    expect_rejected({"run", "--restitution", a},
+                    std::string("--restitution must be in [0, 1], got ") + a);
+  expect_rejected({"run", "--restitution", "abc"}, "--restitution must be a number, got 'abc'");
+  expect_rejected({"run", "--engine", "edmd", "--restitution", "2"}, "--restitution must be in");
+  // the white-noise drive heats an elastic gas without bound, and is a DSMC option
+  expect_rejected({"run", "--drive", "white-noise"}, "--drive white-noise needs --restitution < 1");
+  expect_rejected({"run", "--drive", "white-noise", "--restitution", "1"},
+                  "--drive white-noise needs --restitution < 1");
+  expect_rejected({"run", "--drive", "white-noise", "--restitution", "0.5", "--model", "maxwell"},
+                  "--drive white-noise is defined for --model hs only");
+  expect_rejected({"run", "--drive", "bogus"}, "--drive: unknown drive 'bogus'");
+  expect_rejected({"run", "--restitution", "0.5", "--drive-dt", "0.1"},
+                  "--drive-dt applies with --drive white-noise only");
+  expect_rejected({"run", "--drive-dt", "0.1"}, "--drive-dt applies with --drive white-noise only");
+  expect_rejected({"run", "--restitution", "0.5", "--drive", "white-noise", "--drive-dt", "0"},
+                  "--drive-dt must be a finite interval > 0 and at most 1");
+  expect_rejected({"run", "--engine", "edmd", "--drive", "white-noise", "--restitution", "0.5"},
+                  "--drive applies to --engine dsmc only");
+  expect_rejected({"run", "--engine", "edmd", "--restitution", "0.5", "--drive-dt", "0.1"},
+                  "--drive-dt applies to --engine dsmc only");
+  // the TC model acts on inelastic EDMD collisions only
+  expect_rejected({"run", "--engine", "edmd", "--tc-time", "0.1"},
+                  "--tc-time applies with --restitution < 1 only");
+  expect_rejected({"run", "--engine", "edmd", "--tc-time", "0.1", "--restitution", "1"},
+                  "--tc-time applies with --restitution < 1 only");
+  expect_rejected({"run", "--engine", "edmd", "--restitution", "0.5", "--tc-time", "-1"},
+                  "--tc-time must be a finite time >= 0");
+  expect_rejected({"run", "--restitution", "0.5", "--tc-time", "0.1"},
+                  "--tc-time applies to --engine edmd only");
+  // transport and structure measure the elastic fluid at equilibrium
+  expect_rejected({"run", "--transport", "--until", "500", "--restitution", "0.9"},
+                  "--transport measures the elastic gas at equilibrium: leave out --restitution");
+  expect_rejected(
+      {"run", "--engine", "edmd", "--transport", "--until", "100", "--restitution", "0.9"},
+      "--transport measures the elastic gas at equilibrium");
+  expect_rejected(
+      {"run", "--engine", "edmd", "--structure", "--until", "100", "--restitution", "0.9"},
+      "--structure measures the elastic fluid at equilibrium: leave out --restitution");
+}
 #endif

@@ -199,6 +199,28 @@ TEST_CASE("kill and resume: EDMD in 3D continues byte for byte", "[checkpoint]")
   kill_and_resume(edmd(3, "0.45", "2000", false), 11, 2);  // the dense regime: lists
 }
 
+namespace {
+/// `args` with `extra` appended.
+std::vector<std::string> with(std::vector<std::string> args,
+                              const std::vector<std::string>& extra) {
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+}  // namespace
+
+TEST_CASE("kill and resume: granular gases continue byte for byte", "[checkpoint]") {
+  // DSMC cooling gas: the scaled velocities with their real time, temperature and log scale
+  kill_and_resume(with(dsmc(3, "hs", false), {"--restitution", "0.7"}), 12, 2);
+  // DSMC driven gas: the kicks and their clock
+  kill_and_resume(with(dsmc(3, "hs", false),
+                       {"--restitution", "0.7", "--drive", "white-noise", "--drive-dt", "0.3"}),
+                  13, 2);
+  // EDMD: elastic until t = 2, then quenched to 0.8; the kills land before or after the
+  // quench, and the TC model's last collision times are kept
+  kill_and_resume(
+      with(edmd(3, "0.3", "2000", false), {"--restitution", "0.8", "--tc-time", "0.01"}), 14, 2);
+}
+
 TEST_CASE("kill and resume: DSMC models, species and D = 1, 3, 6", "[checkpoint][long]") {
   kill_and_resume(dsmc(1, "hs", true), 3, 3);
   kill_and_resume(dsmc(3, "maxwell", false), 4, 3);

@@ -345,7 +345,7 @@ const std::set<std::string> run_names{
     "--vhs-exponent", "--init", "--until", "--every", "--packing", "--mass-ratio", "--fraction",
     "--temperature", "--seed", "--threads", "-j", "--replicas", "--checkpoint-every",
     "--checkpoint-wall", "--transport", "--correlation-dt", "--correlation-time", "--tagged",
-    "--help", "-h"};
+    "--restitution", "--drive", "--drive-dt", "--tc-time", "--help", "-h"};
 const std::set<std::string> bench_names{"--engine", "--dim", "-d", "--n", "-n", "--model",
                                         "--packing", "--reps", "--min-collisions", "--threads",
                                         "-j", "--seed", "--help", "-h"};
@@ -783,7 +783,8 @@ std::pair<Args, std::string> mutated(Rng& r, const Command& base, const Spec& sp
 
 const std::vector<std::string> run_numeric{
     "--dim", "--n", "--until", "--every", "--packing", "--mass-ratio", "--fraction",
-    "--temperature", "--seed", "--threads", "--vhs-exponent", "--checkpoint-every"};
+    "--temperature", "--seed", "--threads", "--vhs-exponent", "--checkpoint-every",
+    "--restitution"};
 const std::vector<std::string> known_inits{"maxwell", "delta", "cube", "beams", "bimaxwell",
                                            "bkw", "two-temp"};
 
@@ -818,16 +819,26 @@ Command dsmc_run(Rng& r) {
   if (r.chance(0.15)) c.opts.push_back({"--temperature", fmt_double(0.1 + 4 * r.unit())});
   if (r.chance(0.1)) c.opts.push_back({"--threads", std::to_string(r.range(1, 3))});
   if (r.chance(0.1)) c.opts.push_back({"--replicas", std::to_string(r.range(1, 3))});
+  if (r.chance(0.15)) {  // a granular gas, cooling or driven
+    c.opts.push_back({"--restitution", fmt_double(r.chance(0.2) ? 0.0 : r.unit(), "%.3f")});
+    if (r.chance(0.4)) {
+      c.opts.push_back({"--drive", "white-noise"});
+      if (r.chance(0.5)) c.opts.push_back({"--drive-dt", fmt_double(0.01 + r.unit(), "%.3f")});
+    }
+  }
   add_common_run_extras(r, c, until);
   return c;
 }
 
 Spec dsmc_spec() {
   return {run_numeric,
-          {{"--packing", "0.2"}, {"--packing", "0.1"}, {"--packing", "0.5"}},
+          {{"--packing", "0.2"}, {"--packing", "0.1"}, {"--packing", "0.5"},
+           {"--tc-time", "0.01"}},
           {{"--json", std::nullopt}, {"--seed", "3"}, {"--model", "vhs"}, {"--vhs-exponent", "0.5"},
            {"--init", "bkw"}, {"--every", "0.1"}, {"--threads", "2"}, {"--temperature", "2"},
-           {"--checkpoint-every", "0.2"}, {"--checkpoint-wall", "1min"}}};
+           {"--checkpoint-every", "0.2"}, {"--checkpoint-wall", "1min"},
+           {"--restitution", "0.5"}, {"--drive", "white-noise"}, {"--drive", "none"},
+           {"--drive-dt", "0.2"}}};
 }
 
 Command edmd_run(Rng& r) {
@@ -843,6 +854,10 @@ Command edmd_run(Rng& r) {
              {"--until", fmt_double(until)},
              {"--packing", fmt_double(packing, "%.3f")},
              {"--out", "out"}}};
+  if (r.chance(0.15)) {  // a granular gas, quenched after its elastic equilibration
+    c.opts.push_back({"--restitution", fmt_double(r.chance(0.2) ? 0.0 : r.unit(), "%.3f")});
+    if (r.chance(0.3)) c.opts.push_back({"--tc-time", r.chance(0.5) ? "0" : "0.001"});
+  }
   add_common_run_extras(r, c, until);
   return c;
 }
@@ -851,10 +866,10 @@ Spec edmd_spec() {
   return {run_numeric,
           {{"--model", "maxwell"}, {"--model", "hs"}, {"--model", "vhs"}, {"--temperature", "2"},
            {"--temperature", "1"}, {"--threads", "2"}, {"--threads", "1"},
-           {"--vhs-exponent", "0.5"}},
+           {"--vhs-exponent", "0.5"}, {"--drive", "white-noise"}, {"--drive-dt", "0.1"}},
           {{"--json", std::nullopt}, {"--seed", "3"}, {"--init", "delta"}, {"--every", "0.1"},
            {"--mass-ratio", "2"}, {"--fraction", "0.3"}, {"--checkpoint-every", "0.3"},
-           {"--packing", "0.05"}}};
+           {"--packing", "0.05"}, {"--restitution", "0.8"}, {"--tc-time", "0.001"}}};
 }
 
 Command bench_cmd(Rng& r) {

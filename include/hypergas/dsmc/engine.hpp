@@ -263,6 +263,9 @@ class Engine {
     s_.impulse = 0.5 * (1.0 + cfg.restitution);
     if (cfg.drive != Drive::none && !std::is_same_v<Model, HardSpheres>)
       throw InvalidInput("DSMC: the white-noise drive is defined for hard spheres (--model hs)");
+    if (cfg.drive != Drive::none && D < 2)
+      throw InvalidInput("DSMC: the white-noise drive needs D >= 2 (its strength comes from the "
+                         "Sonine theory of D >= 2)");
     detail::advise_huge_pages(s_.p.velocity_data().data(),
                               s_.p.velocity_data().size() * sizeof(double));
     detail::retune(s_, true);

@@ -108,7 +108,7 @@ TEST_CASE("MomentsRecorder writes moments.csv and speed_histogram.csv per docs/d
   CHECK(m.rfind("time,collisions_per_particle,m2,m4,kurtosis_x,", 0) == 0);
   CHECK(std::count(m.begin(), m.end(), '\n') == 4);
   const std::string h = test::read_text(dir.path / "speed_histogram.csv");
-  CHECK(h.rfind("lo,hi,count,density,maxwell_density\n", 0) == 0);
+  CHECK(h.rfind("lo,hi,count,density,maxwell_density,sonine_density\n", 0) == 0);
   CHECK(std::count(h.begin(), h.end(), '\n') == 41);
   // Columns are consistent: counts sum to n less the (rare) overflow, both densities
   // integrate to ~1 (the range covers MB up to tail 1e-7), density = count / (n width).
@@ -116,15 +116,19 @@ TEST_CASE("MomentsRecorder writes moments.csv and speed_histogram.csv per docs/d
     std::istringstream in(h);
     std::string line;
     std::getline(in, line);
-    double counts = 0, hist_mass = 0, mb_mass = 0;
+    double counts = 0, hist_mass = 0, mb_mass = 0, sonine_mass = 0;
     while (std::getline(in, line)) {
-      double lo, hi, c, dens, mb;
-      REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf", &lo, &hi, &c, &dens, &mb) == 5);
+      double lo, hi, c, dens, mb, son;
+      REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf", &lo, &hi, &c, &dens, &mb,
+                          &son) == 6);
       CHECK(dens == Approx(c / (20000.0 * (hi - lo))).epsilon(1e-12));
       counts += c;
       hist_mass += dens * (hi - lo);
       mb_mass += mb * (hi - lo);
+      sonine_mass += son * (hi - lo);
     }
+    // the first Sonine correction integrates to 0 (up to the range's tail)
+    CHECK(sonine_mass == Approx(1.0).margin(1e-4));
     CHECK(counts <= 20000.0);
     CHECK(counts >= 19999.0);
     CHECK(hist_mass == Approx(counts / 20000.0).epsilon(1e-12));
@@ -143,7 +147,9 @@ TEST_CASE("MomentsRecorder writes moments.csv and speed_histogram.csv per docs/d
   for (std::size_t i = 0; i < st.size(); i += 2) st.species[i] = 1;
   st.species_inv_mass = {1.0, 0.5};
   mix.observe(st.snapshot());
-  CHECK(mix.columns().back() == "kT_1");
+  // the per-species columns come before the trailing a2, a3, T, real_time
+  const std::vector<std::string> tail(mix.columns().end() - 6, mix.columns().end());
+  CHECK(tail == std::vector<std::string>{"kT_0", "kT_1", "a2", "a3", "T", "real_time"});
   mix.write_speed_histogram_csv((dir.path / "h1.csv").string(), 1);
   CHECK(test::read_text(dir.path / "h1.csv").rfind("lo,hi,count,density,maxwell_density\n", 0) == 0);
   CHECK_THROWS_AS(mix.write_speed_histogram_csv((dir.path / "h2.csv").string(), 2), InvalidInput);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "hypergas/analysis/fit.hpp"
 #include "hypergas/analysis/histogram.hpp"
 #include "hypergas/analysis/maxwell.hpp"
 #include "hypergas/granular/theory.hpp"
@@ -19,21 +20,6 @@ namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 constexpr std::size_t blocks = 8;
-
-/// Least-squares slope of y against x over [b, e).
-double slope(const std::vector<double>& x, const std::vector<double>& y, std::size_t b,
-             std::size_t e) {
-  double sx = 0.0, sy = 0.0;
-  const double k = static_cast<double>(e - b);
-  for (std::size_t i = b; i < e; ++i) sx += x[i], sy += y[i];
-  const double mx = sx / k, my = sy / k;
-  double sxy = 0.0, sxx = 0.0;
-  for (std::size_t i = b; i < e; ++i) {
-    sxy += (x[i] - mx) * (y[i] - my);
-    sxx += (x[i] - mx) * (x[i] - mx);
-  }
-  return sxx > 0.0 ? sxy / sxx : nan;
-}
 
 /// Mean and standard error over `blocks` consecutive blocks of rows [b, e) of f(block b, e).
 template <class F>
@@ -62,16 +48,8 @@ std::pair<double, double> tail_slopes(const analysis::MomentsRecorder& m, int d)
     w.push_back(h.count(i));
   }
   if (c.size() < 3) return {nan, nan};
-  const auto fit = [&](const std::vector<double>& yy) {
-    double sw = 0.0, sx = 0.0, sy = 0.0;
-    for (std::size_t i = 0; i < c.size(); ++i) sw += w[i], sx += w[i] * c[i], sy += w[i] * yy[i];
-    const double mx = sx / sw, my = sy / sw;
-    double sxy = 0.0, sxx = 0.0;
-    for (std::size_t i = 0; i < c.size(); ++i)
-      sxy += w[i] * (c[i] - mx) * (yy[i] - my), sxx += w[i] * (c[i] - mx) * (c[i] - mx);
-    return -sxy / sxx;
-  };
-  return {fit(y), fit(ym)};
+  return {-analysis::line_slope(c, y, 0, c.size(), w),
+          -analysis::line_slope(c, ym, 0, c.size(), w)};
 }
 
 }  // namespace
@@ -109,7 +87,7 @@ void add_granular_summary(analysis::JsonObject& summary, const analysis::Moments
   for (const double x : T) lnT.push_back(std::log(x));
   const studies::MeanSe cool =
       enough && !run.driven ? over_blocks(b, n, [&](std::size_t i, std::size_t e) {
-        return -slope(cpp, lnT, i, e);
+        return -analysis::line_slope(cpp, lnT, i, e);
       })
                             : studies::MeanSe{nan, nan};
   put("cooling_per_collision", cool.mean);
@@ -126,7 +104,7 @@ void add_granular_summary(analysis::JsonObject& summary, const analysis::Moments
     for (const double x : T) inv.push_back(1.0 / std::sqrt(x));
     const studies::MeanSe haff =
         enough ? over_blocks(b, n, [&](std::size_t i, std::size_t e) {
-          return 1.0 / (std::sqrt(T.front()) * slope(t, inv, i, e));
+          return 1.0 / (std::sqrt(T.front()) * analysis::line_slope(t, inv, i, e));
         })
                : studies::MeanSe{nan, nan};
     put("haff_t0", haff.mean);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "gsl_guard.hpp"
@@ -148,6 +149,20 @@ RelaxationFit fit_relaxation(const std::vector<double>& t, const std::vector<dou
   if (!std::isfinite(r.rate.value) || !std::isfinite(r.rate.error))
     throw InvalidInput("fit_relaxation: the data do not determine a rate (flat or not decaying)");
   return r;
+}
+
+double line_slope(const std::vector<double>& x, const std::vector<double>& y, std::size_t b,
+                  std::size_t e, const std::vector<double>& w) {
+  const auto wt = [&](std::size_t i) { return w.empty() ? 1.0 : w[i]; };
+  double sw = 0.0, sx = 0.0, sy = 0.0;
+  for (std::size_t i = b; i < e; ++i) sw += wt(i), sx += wt(i) * x[i], sy += wt(i) * y[i];
+  const double mx = sx / sw, my = sy / sw;
+  double sxy = 0.0, sxx = 0.0;
+  for (std::size_t i = b; i < e; ++i) {
+    sxy += wt(i) * (x[i] - mx) * (y[i] - my);
+    sxx += wt(i) * (x[i] - mx) * (x[i] - mx);
+  }
+  return sxx > 0.0 ? sxy / sxx : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace hypergas::analysis

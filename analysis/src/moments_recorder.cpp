@@ -15,6 +15,7 @@
 #include "hypergas/analysis/sample.hpp"
 #include "hypergas/analysis/statistics.hpp"
 #include "hypergas/error.hpp"
+#include "hypergas/granular/theory.hpp"
 
 namespace hypergas::analysis {
 
@@ -416,17 +417,11 @@ bool MomentsRecorder::record(const Snapshot& s, const tally::Tally& t) {
       const auto nk = static_cast<double>(t.count(k));
       row.push_back(nk > 0 ? t.energy(k) / (s.dim * nk) * scale2 : NAN);
     }
-  {
-    // a2 and a3 of the pooled speeds: <v^4> = (1 + a2) (D + 2)/D <v^2>^2 and
-    // <v^6> = (1 + 3 a2 - a3) (D + 2)(D + 4)/D^2 <v^2>^3 (granular/theory.hpp)
-    const double d = s.dim, m2 = m.m2.value;
-    const double a2 = d / (d + 2.0) * m.m4.value / (m2 * m2) - 1.0;
-    const double a3 = 1.0 + 3.0 * a2 - d * d / ((d + 2.0) * (d + 4.0)) * m.m6.value / (m2 * m2 * m2);
-    row.push_back(a2);
-    row.push_back(a3);
-    row.push_back(m.kT * std::exp(2.0 * s.log_velocity_scale));
-    row.push_back(std::isnan(s.real_time) ? s.time : s.real_time);
-  }
+  // trailing_columns: a2 and a3 of the pooled speeds (granular/theory.hpp), T, real_time
+  row.push_back(granular::a2_from_moments(m.m2.value, m.m4.value, s.dim));
+  row.push_back(granular::a3_from_moments(m.m2.value, m.m4.value, m.m6.value, s.dim));
+  row.push_back(m.kT * std::exp(2.0 * s.log_velocity_scale));
+  row.push_back(std::isnan(s.real_time) ? s.time : s.real_time);
 
   if (columns_.empty()) {
     n_species_ = ns;

@@ -49,6 +49,7 @@
 
 #include <fmt/core.h>
 
+#include "hypergas/analysis/fit.hpp"
 #include "hypergas/analysis/moments_recorder.hpp"
 #include "hypergas/analysis/output.hpp"
 #include "hypergas/dsmc/engine.hpp"
@@ -74,21 +75,6 @@ MeanSe mean_se(const std::vector<double>& v) {
   double q = 0.0;
   for (const double x : v) q += (x - m) * (x - m);
   return {m, std::sqrt(q / (k - 1.0) / k)};
-}
-
-/// Least-squares slope of y against x over the rows [b, e).
-double slope(const std::vector<double>& x, const std::vector<double>& y, std::size_t b,
-             std::size_t e) {
-  double sx = 0.0, sy = 0.0;
-  const double k = static_cast<double>(e - b);
-  for (std::size_t i = b; i < e; ++i) sx += x[i], sy += y[i];
-  const double mx = sx / k, my = sy / k;
-  double sxy = 0.0, sxx = 0.0;
-  for (std::size_t i = b; i < e; ++i) {
-    sxy += (x[i] - mx) * (y[i] - my);
-    sxx += (x[i] - mx) * (x[i] - mx);
-  }
-  return sxy / sxx;
 }
 
 /// The blocks of the errors: 8 consecutive stretches of the second half of a run.
@@ -120,7 +106,7 @@ struct Cooling {
     std::vector<double> lnT, v;
     for (const double x : T) lnT.push_back(std::log(x));
     for (const auto& [b, e] : stretches(cpp, 0.5 * cpp.back(), cpp.back()))
-      v.push_back(-slope(cpp, lnT, b, e));
+      v.push_back(-analysis::line_slope(cpp, lnT, b, e));
     return mean_se(v);
   }
   /// Haff's t0 from the slope of (T/T0)^(-1/2) against t over the second half of the
@@ -129,7 +115,7 @@ struct Cooling {
     std::vector<double> inv, v;
     for (const double x : T) inv.push_back(1.0 / std::sqrt(x));
     for (const auto& [b, e] : stretches(cpp, 0.5 * cpp.back(), cpp.back()))
-      v.push_back(1.0 / slope(t, inv, b, e));
+      v.push_back(1.0 / analysis::line_slope(t, inv, b, e));
     return mean_se(v);
   }
 };

@@ -18,10 +18,12 @@
 #include <cmath>
 #include <vector>
 
+#include "hypergas/analysis/fit.hpp"
 #include "hypergas/dsmc/engine.hpp"
 #include "hypergas/edmd/engine.hpp"
 #include "hypergas/granular/theory.hpp"
 #include "hypergas/observer.hpp"
+#include "hypergas/studies/statistics.hpp"
 
 using namespace hypergas;
 
@@ -49,37 +51,23 @@ struct Samples final : Observer {
   }
 };
 
-struct MeanSe {
-  double mean, se;
-};
+using studies::MeanSe;
+using analysis::line_slope;
 
 /// Mean and standard error of f over 8 consecutive blocks of samples [b, e).
 template <class F>
 MeanSe blocks(std::size_t b, std::size_t e, F f) {
-  constexpr int k = 8;
+  constexpr std::size_t k = 8;
   const std::size_t len = (e - b) / k;
-  double s = 0.0, s2 = 0.0;
-  for (int j = 0; j < k; ++j) {
-    const double v = f(b + j * len, b + (j + 1) * len);
-    s += v;
-    s2 += v * v;
-  }
-  const double m = s / k;
-  return {m, std::sqrt(std::max(0.0, s2 / k - m * m) / (k - 1))};
+  std::vector<double> v;
+  for (std::size_t j = 0; j < k; ++j) v.push_back(f(b + j * len, b + (j + 1) * len));
+  return studies::mean_se(v);
 }
 
 double mean(const std::vector<double>& y, std::size_t b, std::size_t e) {
   double s = 0.0;
   for (std::size_t i = b; i < e; ++i) s += y[i];
   return s / static_cast<double>(e - b);
-}
-
-double slope(const std::vector<double>& x, const std::vector<double>& y, std::size_t b,
-             std::size_t e) {
-  const double mx = mean(x, b, e), my = mean(y, b, e);
-  double sxy = 0.0, sxx = 0.0;
-  for (std::size_t i = b; i < e; ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
-  return sxy / sxx;
 }
 
 template <int D>
@@ -142,7 +130,7 @@ TEMPLATE_TEST_CASE_SIG("Haff's law: t0 and exponent of the DSMC cooling gas", "[
   for (const double t : s.T) inv.push_back(1.0 / std::sqrt(t));
   const double T0 = s.T.front();
   const MeanSe t0 = blocks(n / 2, n, [&](std::size_t b, std::size_t e) {
-    return 1.0 / (std::sqrt(T0) * slope(s.real_time, inv, b, e));
+    return 1.0 / (std::sqrt(T0) * line_slope(s.real_time, inv, b, e));
   });
   const double theory = granular::haff_t0(alpha, D, granular::a2_hcs(alpha, D));
   INFO("D = " << D << ": t0 = " << t0.mean << " +- " << t0.se << ", Sonine " << theory);
@@ -153,7 +141,7 @@ TEMPLATE_TEST_CASE_SIG("Haff's law: t0 and exponent of the DSMC cooling gas", "[
     lx.push_back(std::log1p(s.real_time[i] / theory));
     ly.push_back(std::log(s.T[i] / T0));
   }
-  const MeanSe p = blocks(n / 2, n, [&](std::size_t b, std::size_t e) { return -slope(lx, ly, b, e); });
+  const MeanSe p = blocks(n / 2, n, [&](std::size_t b, std::size_t e) { return -line_slope(lx, ly, b, e); });
   INFO("exponent " << p.mean << " +- " << p.se);
   CHECK(std::abs(p.mean - 2.0) <= 0.02 + 4.5 * p.se);
 }
@@ -206,7 +194,7 @@ void check_two_engines(double alpha, double packing, double until, double every)
     std::vector<double> lnT;
     for (const double t : s.T) lnT.push_back(std::log(t));
     const std::size_t n = s.T.size();
-    return blocks(n / 2, n, [&](std::size_t b, std::size_t e) { return -slope(s.cpp, lnT, b, e); });
+    return blocks(n / 2, n, [&](std::size_t b, std::size_t e) { return -line_slope(s.cpp, lnT, b, e); });
   };
   const MeanSe rm = rate(m), rd = rate(d);
   const double a2 = granular::a2_hcs(alpha, D);

@@ -121,7 +121,8 @@ class Engine {
       s_.observed_at);
     a(s_.collisions, s_.candidates, s_.since_scan, s_.self_check, s_.check_failures,
       s_.species_w);
-    a(s_.impulse, s_.log_scale, s_.real_time, s_.kT0, s_.kicks);
+    a(s_.log_scale, s_.real_time, s_.kT0, s_.kicks);
+    s_.impulse = impulse_of(s_.cfg);
     if (s_.p.size() != s_.n) throw InvalidInput("checkpoint: particle count does not match");
   }
   /// "dsmc D=3 model=hs species=0": what a checkpoint must match.
@@ -260,7 +261,7 @@ class Engine {
     s_.n = static_cast<std::uint32_t>(s_.p.size());
     s_.c = dsmc::rate_constant(s_.p, s_.model.exponent());
     s_.kT0 = equilibrium_temperature(s_.p);
-    s_.impulse = 0.5 * (1.0 + cfg.restitution);
+    s_.impulse = impulse_of(cfg);
     if (cfg.drive != Drive::none && !std::is_same_v<Model, HardSpheres>)
       throw InvalidInput("DSMC: the white-noise drive is defined for hard spheres (--model hs)");
     if (cfg.drive != Drive::none && D < 2)
@@ -277,6 +278,8 @@ class Engine {
     initialize_velocities(p, cfg.init, r, cfg.initial);
     return p;
   }
+  /// The factor (1 + alpha)/2 of the collisions' impulse (State::impulse: derived, not saved).
+  static double impulse_of(const Config& cfg) { return 0.5 * (1.0 + cfg.restitution); }
   static Model make_model(const Config& cfg) {
     if constexpr (std::is_same_v<Model, VariableHardSpheres>)
       return Model(cfg.vhs_exponent);

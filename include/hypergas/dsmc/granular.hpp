@@ -2,7 +2,8 @@
 // homogeneous cooling state in scaled velocities, and the white-noise drive.
 //
 // Restitution. With a coefficient of normal restitution alpha the change of relative
-// velocity that the collision model produces is scaled by (1 + alpha) / 2 (State::collide):
+// velocity that the collision model produces is scaled by (1 + alpha) / 2 (apply_deflection,
+// dsmc/update.hpp):
 // for hard spheres g' = g - (1 + alpha) (g.n) n, so the normal relative velocity is
 // reversed and multiplied by alpha; momentum is conserved and the pair loses
 // (1 - alpha^2) / 2 mu (g.n)^2 (mu the reduced mass). For the isotropic models (maxwell,

@@ -14,13 +14,20 @@
 namespace hypergas::dsmc {
 
 /// Applies the change dg = g' - g of the relative velocity of particles i and j (views vi,
-/// vj into p's velocity array). Single-mass scenes compile the weights to 1/2; in D = 1
-/// with equal masses g' = +-g and the update is done as an exact keep-or-swap.
+/// vj into p's velocity array), scaled by `impulse` = (1 + alpha)/2 for a coefficient of
+/// restitution alpha (dsmc/granular.hpp; 1: elastic, dg as it is). Single-mass scenes
+/// compile the weights to 1/2; in D = 1 an elastic collision of equal masses has g' = +-g
+/// and is done as an exact keep-or-swap.
 template <int D, Features F, class VI, class VJ>
 [[gnu::always_inline]] inline void apply_deflection(const Particles<D, F>& p, std::uint32_t i,
                                                 std::uint32_t j, VI&& vi,
-                                                VJ&& vj, const Vec<D>& dg) {
+                                                VJ&& vj, const Vec<D>& dg, double impulse) {
   constexpr bool equal_masses = !F.species;
+  if (impulse != 1.0) [[unlikely]] {
+    hypergas::detail::exchange_relative<D, equal_masses>(vi, vj, p.inv_mass(i), p.inv_mass(j),
+                                                         (impulse * dg).eval());
+    return;
+  }
   if constexpr (equal_masses && D == 1) {
     if (dg[0] != 0.0) std::swap(vi[0], vj[0]);
   } else {

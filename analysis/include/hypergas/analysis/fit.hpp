@@ -1,4 +1,5 @@
-// hypergas/analysis/fit.hpp -- relaxation-time fit y(t) = A exp(-t / tau) + c.
+// hypergas/analysis/fit.hpp -- relaxation-time fit y(t) = A exp(-t / tau) + c, and the
+// least-squares slope of a straight line.
 //
 // Nonlinear least squares (GSL gsl_multifit_nlinear, Levenberg–Marquardt trust region). The
 // parameter errors are the square roots of the covariance diagonal; without given sigmas
@@ -30,5 +31,10 @@ struct RelaxationFit {
 RelaxationFit fit_relaxation(const std::vector<double>& t, const std::vector<double>& y,
                              const std::vector<double>& sigma = {}, bool fit_offset = true,
                              double fixed_offset = 0.0);
+
+/// Least-squares slope of y against x over the points [b, e), weighted by w (empty: all
+/// weights 1); units of y per unit of x. NaN if the x of the points do not vary.
+double line_slope(const std::vector<double>& x, const std::vector<double>& y, std::size_t b,
+                  std::size_t e, const std::vector<double>& w = {});
 
 }  // namespace hypergas::analysis

@@ -66,7 +66,8 @@ struct FluxHook {
 };
 
 /// Shared state of Engine<D, Model, F>: plain data with the per-candidate kernel. Every
-/// member but `draws` is saved by the engine's io() (the draws are a function of the seed).
+/// member but `draws` and `impulse` is saved by the engine's io() (the draws are a function
+/// of the seed, the impulse of cfg).
 template <int D, class Model, Features F>
 struct State {
   using ParticlesT = Particles<D, F>;
@@ -94,7 +95,8 @@ struct State {
   std::array<double, max_species> species_w{};  // the observers' species mass table
   tally::Slot tally;      // the collision-level observer's tally, if one was installed
   // Granular gases (dsmc/granular.hpp). impulse = (1 + alpha) / 2 scales each collision's
-  // change of relative velocity; the velocities are stored as v / scale with
+  // change of relative velocity (derived from cfg, not saved by io()); the velocities are
+  // stored as v / scale with
   // log_scale = ln(scale); real_time is the time in mean collision times at kT0.
   double impulse = 1.0;
   double log_scale = 0.0;
@@ -143,25 +145,15 @@ struct State {
     Vec<D> delta;
     if constexpr (Outlined) delta = deflect_outlined(g, gn, rng_k) - g;
     else delta = Model::template deflect<D>(g, gn, rng_k) - g;
-    if (impulse != 1.0) [[unlikely]] {  // inelastic: the impulse scaled by (1 + alpha) / 2
-      delta *= impulse;
+    if constexpr (Hook::active) {
       const Vec<D> oi = vi, oj = vj;
-      hypergas::detail::exchange_relative<D, !F.species>(vi, vj, p.inv_mass(i), p.inv_mass(j),
-                                                          delta);
-      if constexpr (Hook::active) {
-        hook.collided(p, i, j, oi.data(), oj.data(), vi.data(), vj.data());
-        if constexpr (requires { hook.at_candidate(K, i, j, oi.data(), oj.data()); })
-          hook.at_candidate(K, i, j, oi.data(), oj.data());
-      }
-    } else if constexpr (Hook::active) {
-      const Vec<D> oi = vi, oj = vj;
-      apply_deflection<D>(p, i, j, vi, vj, delta);
+      apply_deflection<D>(p, i, j, vi, vj, delta, impulse);
       hook.collided(p, i, j, oi.data(), oj.data(), vi.data(), vj.data());
       if constexpr (requires { hook.at_candidate(K, i, j, oi.data(), oj.data()); })
         hook.at_candidate(K, i, j, oi.data(), oj.data());
     } else {
       (void)hook;
-      apply_deflection<D>(p, i, j, vi, vj, delta);
+      apply_deflection<D>(p, i, j, vi, vj, delta, impulse);
     }
     if constexpr (Model::needs_majorant)
       return std::max(vi.squaredNorm(), vj.squaredNorm());

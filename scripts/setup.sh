@@ -26,6 +26,7 @@ packages=(
   libpcg-cpp-dev                         # PCG random streams (core)
   libgsl-dev libfftw3-dev                # analysis: statistics, fits, FFT
   libcli11-dev libfmt-dev                # the command: options and output
+  libtomlplusplus-dev                    # the command: sweep plans (TOML)
   gnuplot-nox                            # PNG plots
 )
 python_packages=(
@@ -41,7 +42,8 @@ case "$level" in
     targets=(--target hypergas_cli --target hypergas_python)
     config=(-DHYPERGAS_BUILD_TESTS=OFF -DHYPERGAS_PYTHON=ON) ;;
   all)
-    packages+=(catch2 "${python_packages[@]}")
+    # Open MPI: sweeps over ranks (the command builds without it); pandas: read_sweep's frames
+    packages+=(catch2 libopenmpi-dev openmpi-bin python3-pandas "${python_packages[@]}")
     targets=()
     config=(-DHYPERGAS_BUILD_TESTS=ON -DHYPERGAS_PYTHON=AUTO) ;;
 esac

@@ -22,8 +22,9 @@ struct SceneOptions {
 /// D, writes CSV and PNG plots. Returns the exit code.
 int default_scene(const SceneOptions& o);
 /// `hypergas run`: one simulation, files into --out (checkpoints there too). With `resume`,
-/// continues the checkpoint it reads (positioned after its header). Returns the exit code.
-int run_command(const RunOptions& o, checkpoint::Reader* resume = nullptr);
+/// continues the checkpoint it reads (positioned after its header). `quiet`: nothing on
+/// stdout and no progress bar (the cases of a sweep). Returns the exit code.
+int run_command(const RunOptions& o, checkpoint::Reader* resume = nullptr, bool quiet = false);
 
 /// Options of `hypergas resume`.
 struct ResumeOptions {
@@ -36,6 +37,19 @@ CLI::App* add_resume_command(CLI::App& app, ResumeOptions& o);
 int resume_command(const ResumeOptions& o);
 /// `hypergas bench`: throughput, one JSON object per line on stdout. Returns the exit code.
 int bench_command(const BenchOptions& o);
+
+/// Options of `hypergas sweep` (sweep_command.cpp).
+struct SweepOptions {
+  std::string plan;    ///< PLAN.toml (may be empty with --resume)
+  std::string out;     ///< the sweep folder DIR
+  std::string resume;  ///< DIR of a sweep to continue
+  bool json = false;   ///< print the sweep's figures as one JSON object, the last stdout line
+};
+/// Registers `hypergas sweep` on `app`, writing into `o`; returns the subcommand.
+CLI::App* add_sweep_command(CLI::App& app, SweepOptions& o);
+/// `hypergas sweep`: the cases of a plan, over the MPI ranks when launched by mpirun/srun.
+/// Returns the exit code (on every rank).
+int sweep_command(const SweepOptions& o);
 
 /// Registers `hypergas report` and its options on `app` (error against run time, the study
 /// of hypergas/studies/report.hpp); returns the subcommand.

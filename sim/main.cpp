@@ -64,6 +64,9 @@ int main(int argc, char** argv) {
   ResumeOptions resume;
   CLI::App* resume_app = add_resume_command(app, resume);
 
+  SweepOptions sweep;
+  CLI::App* sweep_app = add_sweep_command(app, sweep);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help
@@ -84,6 +87,7 @@ int main(int argc, char** argv) {
     }
     if (report_app->parsed()) return report_command();
     if (resume_app->parsed()) return resume_command(resume);
+    if (sweep_app->parsed()) return sweep_command(sweep);
     return default_scene(scene);
   } catch (const hypergas::InvalidInput& e) {
     fmt::print(stderr, "hypergas: {}\n", e.what());

@@ -105,7 +105,12 @@ void OutputDir::commit() {
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(staging_))
     if (e.is_regular_file()) files.push_back(e.path());
-  std::sort(files.begin(), files.end());
+  // summary.json last: where it is present, every other file of the run is in place (a
+  // sweep takes a case folder with a summary.json and no checkpoint as finished).
+  std::sort(files.begin(), files.end(), [](const fs::path& a, const fs::path& b) {
+    const bool sa = a.filename() == "summary.json", sb = b.filename() == "summary.json";
+    return sa != sb ? sb : a < b;
+  });
   committed_.clear();
   for (const fs::path& p : files) {
     fs::rename(p, dir_ / p.filename());  // throws filesystem_error on failure

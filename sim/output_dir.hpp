@@ -29,7 +29,8 @@ class OutputDir {
   std::filesystem::path staged(std::string_view name);
   /// Writes `content` to the staged file `name` (throws std::runtime_error on I/O failure).
   void write(std::string_view name, std::string_view content);
-  /// Moves every file of the staging folder into the output folder and removes staging.
+  /// Moves every file of the staging folder into the output folder and removes staging;
+  /// summary.json moves last, so its presence means the others are in place.
   void commit();
 
   const std::filesystem::path& dir() const { return dir_; }

@@ -21,7 +21,7 @@
 namespace hypergas::cli {
 
 
-int run_command(const RunOptions& o, checkpoint::Reader* resume) {
+int run_command(const RunOptions& o, checkpoint::Reader* resume, bool quiet) {
   OutputDir out(o.out);
   const bool edmd = o.engine_kind() == registry::EngineKind::edmd;
   RunContext ctx;
@@ -32,7 +32,7 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume) {
   ctx.resume = resume;
   // gnuplot starts now, so that its start overlaps the run (its script follows the CSVs)
   studies::GnuplotProcess plot(out.staging());
-  RunRecord rec = simulate(o, true, ctx);
+  RunRecord rec = simulate(o, !quiet, ctx);
   // CSV and plots first, so that summary.json can say how long they took (output_s).
   const auto t0 = std::chrono::steady_clock::now();
   rec.moments.write_moments_csv(out.staged("moments.csv").string());
@@ -63,6 +63,7 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume) {
   std::filesystem::remove(out.dir() / Checkpointer::file_name, ec);
   std::filesystem::remove(out.dir() / (std::string(Checkpointer::file_name) + ".tmp"), ec);
 
+  if (quiet) return 0;
   const auto f = [&](const char* k) { return summary_field(summary, k); };
   fmt::print("{} D={} model={} n={} seed={}: {} collisions in {} s ({} collisions/s)\n",
              f("engine"), f("dim"), f("model"), f("n"), f("seed"), f("collisions"), f("wall_s"),

@@ -18,6 +18,9 @@ Maxwell-Boltzmann density, L1/KL distances, KS and chi-square p-values: one row 
 command's moments.csv), :class:`MomentsRecorder` and :class:`VacfRecorder` (the command's
 recorders, fed by ``run(observers=...)``), :func:`vacf`, :func:`msd`, :func:`maxwell_pdf`,
 :func:`maxwell_cdf` and :func:`report` (error against run time).
+
+Sweeps: :func:`read_sweep` reads the tables (sweep.csv, groups.csv) of a folder written by
+``hypergas sweep``.
 """
 
 import os as _os
@@ -38,6 +41,7 @@ from ._engines import DSMC, EDMD
 from ._analysis import (Analysis, Report, SpeedHistogram, analyse, maxwell_cdf, maxwell_pdf, msd,
                         report, vacf, MomentsRecorder, VacfRecorder,
                         TransportRecorder, HelfandRecorder, StructureRecorder)
+from ._sweep import read_sweep
 from . import _hypergas
 
 models = tuple(_hypergas.model_names())
@@ -48,4 +52,4 @@ jamming_packing = _hypergas.jamming_packing
 __all__ = ["DSMC", "EDMD", "Analysis", "Report", "SpeedHistogram", "analyse", "maxwell_pdf",
            "maxwell_cdf", "vacf", "msd", "report", "MomentsRecorder", "VacfRecorder",
            "TransportRecorder", "HelfandRecorder", "StructureRecorder",
-           "models", "initial_states", "schemes", "jamming_packing"]
+           "read_sweep", "models", "initial_states", "schemes", "jamming_packing"]

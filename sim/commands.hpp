@@ -7,6 +7,7 @@
 
 #include "hypergas/checkpoint.hpp"
 #include "options.hpp"
+#include "ranks.hpp"
 
 namespace hypergas::cli {
 
@@ -47,9 +48,9 @@ struct SweepOptions {
 };
 /// Registers `hypergas sweep` on `app`, writing into `o`; returns the subcommand.
 CLI::App* add_sweep_command(CLI::App& app, SweepOptions& o);
-/// `hypergas sweep`: the cases of a plan, over the MPI ranks when launched by mpirun/srun.
-/// Returns the exit code (on every rank).
-int sweep_command(const SweepOptions& o);
+/// `hypergas sweep`: the cases of a plan, over the ranks of `session` (one process without
+/// MPI). Returns the exit code (on every rank).
+int sweep_command(const SweepOptions& o, const ranks::Session& session);
 
 /// Registers `hypergas report` and its options on `app` (error against run time, the study
 /// of hypergas/studies/report.hpp); returns the subcommand.

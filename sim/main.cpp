@@ -7,11 +7,13 @@
 #include <exception>
 #include <malloc.h>
 #include <filesystem>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include "commands.hpp"
+#include "hypergas/studies/replicas.hpp"
 #include "hypergas/error.hpp"
 #include "progress.hpp"
 #include "run_driver.hpp"
@@ -77,9 +79,29 @@ int main(int argc, char** argv) {
   }
 
   install_interrupt_handler();
+  // Under mpirun/srun (and built with MPI): one MPI session for the commands that use ranks;
+  // `run --replicas` and `report` hand their replicas out over the ranks.
+  const bool ranked = run_app->parsed() || report_app->parsed() || sweep_app->parsed();
+  std::optional<ranks::Session> session;
+  if (ranked) session.emplace();
+  std::optional<ranks::ReplicaRanks> spread;
+  if (session && session->size() > 1 && !sweep_app->parsed()) {
+    spread.emplace(*session);
+    hypergas::studies::set_replica_spread(&*spread);
+  }
+  // An error on one rank while others wait for it: end the job (MPI_Abort) with its code.
+  const auto end = [&](int code) {
+    if (session && session->size() > 1 && !sweep_app->parsed()) session->abort(code);
+    return code;
+  };
   try {
     if (run_app->parsed()) {
-      return run_command(run_options(run));
+      const RunOptions o = run_options(run);
+      if (session && session->size() > 1 && session->rank() == 0 && o.replicas == 1)
+        fmt::print(stderr, "hypergas: note: under MPI, run spreads only --replicas over the "
+                           "ranks; ranks 1..{} have nothing to do\n",
+                   session->size() - 1);
+      return run_command(o);
     }
     if (bench_app->parsed()) {
       validate(bench);
@@ -87,22 +109,22 @@ int main(int argc, char** argv) {
     }
     if (report_app->parsed()) return report_command();
     if (resume_app->parsed()) return resume_command(resume);
-    if (sweep_app->parsed()) return sweep_command(sweep);
+    if (sweep_app->parsed()) return sweep_command(sweep, *session);
     return default_scene(scene);
   } catch (const hypergas::InvalidInput& e) {
     fmt::print(stderr, "hypergas: {}\n", e.what());
-    return 2;
+    return end(2);
   } catch (const InterruptedWithCheckpoint& i) {
     fmt::print(stderr,
                "hypergas: interrupted at t = {:.6g}; checkpoint written to {}/{}\n"
                "Continue with: hypergas resume {}\n",
                i.time, i.dir.string(), Checkpointer::file_name, i.dir.string());
-    return 130;
+    return end(130);
   } catch (const Interrupted&) {
     fmt::print(stderr, "hypergas: interrupted; no output written\n");
-    return 130;
+    return end(130);
   } catch (const std::exception& e) {
     fmt::print(stderr, "hypergas: error: {}\n", e.what());
-    return 1;
+    return end(1);
   }
 }

@@ -2,10 +2,12 @@
 //
 // The study is the studies library's (hypergas/studies/report.hpp, shared with
 // bench_report); this file gives it the command's options, exit codes and output-folder
-// handling (all files or none).
+// handling (all files or none). Under mpirun its replicas spread over the ranks
+// (ranks.hpp: ReplicaRanks); rank 0 writes the files.
 #include <fmt/core.h>
 
 #include "commands.hpp"
+#include "hypergas/studies/replicas.hpp"
 #include "hypergas/studies/report.hpp"
 #include "output_dir.hpp"
 
@@ -28,9 +30,14 @@ CLI::App* add_report_command(CLI::App& app) {
 }
 
 int report_command() {
-  const studies::ReportOptions& o = report_options;
+  studies::ReportOptions o = report_options;
   if (o.threads < 1 || o.threads > 64)
     throw InvalidInput(fmt::format("--threads must be in 1..64, got {}", o.threads));
+  if (!studies::replica_root()) {  // an MPI rank other than 0: its share of the replicas
+    o.verbose = false;
+    (void)studies::run_report_study(o);
+    return 0;
+  }
   OutputDir out(o.out);
   const studies::ReportResult res = studies::run_report_study(o);
   studies::write_report(res, out.staging(), o.plot);

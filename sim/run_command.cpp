@@ -15,6 +15,7 @@
 #include "engine_runs.hpp"
 #include "hypergas/analysis/output.hpp"
 #include "hypergas/studies/gnuplot.hpp"
+#include "hypergas/studies/replicas.hpp"
 #include "output_dir.hpp"
 #include "plot_scripts.hpp"
 
@@ -22,6 +23,13 @@ namespace hypergas::cli {
 
 
 int run_command(const RunOptions& o, checkpoint::Reader* resume, bool quiet) {
+  if (!studies::replica_root()) {  // an MPI rank other than 0: only replicas to run
+    if (o.replicas > 1) {
+      RunContext none;
+      (void)simulate(o, false, none);
+    }
+    return 0;
+  }
   OutputDir out(o.out);
   const bool edmd = o.engine_kind() == registry::EngineKind::edmd;
   RunContext ctx;

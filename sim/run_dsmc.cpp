@@ -102,8 +102,8 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
   if (o.transport) transport = transport_recorder<D>(o, plan);
 
   std::vector<RunRecord> recs(static_cast<std::size_t>(k));
-  std::vector<double> engine_s(k), rate(k), drift_e(k), drift_p(k), cpp(k);
-  std::vector<std::int64_t> coll(k);
+  // per replica; under MPI (studies::ReplicaSpread) these reach rank 0 from every rank
+  std::vector<double> engine_s(k), rate(k), drift_e(k), drift_p(k), cpp(k), coll(k), kurt(k);
   DriverState st0;
   double engine_bpp = 0.0;
   const auto t0 = Clock::now();
@@ -118,11 +118,12 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
     drive(engine, plan, st, obs, ck, save, r == 0 ? transport.get() : nullptr);
     const auto c1 = conserved(engine.particles());
     engine_s[r] = st.engine_s;
-    coll[r] = static_cast<std::int64_t>(engine.collisions());
-    rate[r] = engine_s[r] > 0.0 ? static_cast<double>(coll[r]) / engine_s[r] : 0.0;
+    coll[r] = static_cast<double>(engine.collisions());  // exact below 2^53
+    rate[r] = engine_s[r] > 0.0 ? coll[r] / engine_s[r] : 0.0;
     drift_e[r] = energy_rel_drift(c0, c1);
     drift_p[r] = momentum_drift(c0, c1);
     cpp[r] = engine.collisions_per_particle();
+    kurt[r] = recs[r].moments.column("kurtosis_x").back();
     if (r == 0) engine_bpp = engine.bytes_per_particle();
   };
   if (k == 1) {
@@ -130,11 +131,16 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
     Conserved<D> c0;
     body(0, start_engine(engine, cfg, ctx, st0, c0, recs[0].moments), st0, c0, ctx.checkpoints);
   } else {
-    studies::run_replicas<Engine>(cfg, k, o.threads == 1 ? k : 1, [&](int r, Engine& engine) {
-      DriverState st;
-      Checkpointer none;
-      body(r, engine, r == 0 ? st0 : st, conserved(engine.particles()), none);
-    });
+    studies::run_replicas<Engine>(
+        cfg, k, o.threads == 1 ? k : 1,
+        [&](int r, Engine& engine) {
+          DriverState st;
+          Checkpointer none;
+          body(r, engine, r == 0 ? st0 : st, conserved(engine.particles()), none);
+        },
+        {&engine_s, &rate, &drift_e, &drift_p, &cpp, &coll, &kurt});
+    // replica 0 ran on rank 0, which writes the files; the other ranks are done
+    if (!studies::replica_root()) return std::move(recs[0]);
   }
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
 
@@ -146,11 +152,9 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
   }
   std::int64_t total = 0;
   double total_rate = 0.0;
-  std::vector<double> kurt;
   for (int r = 0; r < k; ++r) {
-    total += coll[r];
+    total += static_cast<std::int64_t>(coll[r]);
     total_rate += rate[r];
-    kurt.push_back((r == 0 ? rec : recs[r]).moments.column("kurtosis_x").back());
   }
   const auto [kurt_mean, kurt_se] = studies::mean_se(kurt);
   const auto last = [&](const char* col) { return rec.moments.column(col).back(); };

@@ -29,7 +29,6 @@
 #include "progress.hpp"
 #include "run_driver.hpp"
 #include "sweep/plan.hpp"
-#include "sweep/ranks.hpp"
 #include "sweep/tables.hpp"
 
 namespace fs = std::filesystem;
@@ -187,10 +186,9 @@ CLI::App* add_sweep_command(CLI::App& app, SweepOptions& o) {
   return s;
 }
 
-int sweep_command(const SweepOptions& opt) {
+int sweep_command(const SweepOptions& opt, const ranks::Session& session) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  ranks::Session session;
   const bool root = session.rank() == 0;
 
   // The plan and its cases, on every rank; the folder, on rank 0.

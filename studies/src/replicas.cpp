@@ -15,7 +15,24 @@ std::uint64_t replica_seed(std::uint64_t seed, int r) {
                 : hypergas::detail::mix64(seed ^ hypergas::detail::mix64(std::uint64_t(r)));
 }
 
-void for_each_replica(int replicas, int threads, const std::function<void(int)>& body) {
+namespace {
+ReplicaSpread* spread = nullptr;
+}
+
+void set_replica_spread(ReplicaSpread* s) { spread = s; }
+bool replica_root() { return !spread || spread->root(); }
+
+void for_each_replica(int replicas, int threads, const std::function<void(int)>& body,
+                      std::initializer_list<std::vector<double>*> results) {
+  for_each_replica(replicas, threads, body, std::vector<std::vector<double>*>(results));
+}
+
+void for_each_replica(int replicas, int threads, const std::function<void(int)>& body,
+                      const std::vector<std::vector<double>*>& results) {
+  if (spread && !results.empty()) {
+    spread->run(replicas, body, results);
+    return;
+  }
   threads = std::max(1, std::min(threads, replicas));
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
   auto work = [&](int t) {

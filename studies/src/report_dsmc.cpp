@@ -68,6 +68,8 @@ EqRuns equilibrium_runs(std::size_t N, const std::vector<double>& Ts, int R, std
   out.est.assign(Ts.size(), std::vector<double>(R));
   out.cpu = out.est;
   std::vector<double> qx(R);
+  std::vector<std::vector<double>*> results{&qx};  // what a replica writes, for a spread
+  for (std::size_t k = 0; k < Ts.size(); ++k) results.insert(results.end(), {&out.est[k], &out.cpu[k]});
   for_each_replica(R, threads, [&](int r) {
     dsmc::Config cfg;
     cfg.n = N;
@@ -91,7 +93,7 @@ EqRuns equilibrium_runs(std::size_t N, const std::vector<double>& Ts, int R, std
         ++k;
       }
     }
-  });
+  }, results);
   out.q_exact = mean_se(qx).mean;  // identical for all replicas (same masses and N)
   return out;
 }
@@ -193,7 +195,7 @@ void maxwell_study(const ReportOptions& o, ReportResult& res) {
         }
         rate[r] = fit_decay_rate(ts, ys, 0.1 * lam, 10.0 * lam);
         cpu[r] = thread_cpu_seconds() - c0;
-      });
+      }, {&rate, &cpu});
       const auto [err, se] = rel_rms(rate, lam);
       res.points.push_back(
           {"maxwell", "dsmc", D, static_cast<double>(N), mean_se(cpu).mean, err, se, Rm});
@@ -222,7 +224,7 @@ void ntc_study(const ReportOptions& o, ReportResult& res) {
       for (std::size_t i = 0; i < N; ++i) m2 += p.velocity(i).squaredNorm() / N;
       for (std::size_t i = 0; i < N; ++i) m4 += std::pow(p.velocity(i).squaredNorm() / m2, 2) / N;
       k[r] = m4;
-    });
+    }, {&k});
     return mean_se(k);
   };
   const MeanSe ex = kurt(dsmc::Scheme::exact, 1.0, o.seed + 1234);

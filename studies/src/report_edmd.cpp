@@ -57,7 +57,7 @@ void eos_study(const ReportOptions& o, ReportResult& res) {
                 e.run_until(2.0 + T);
                 cpu[r] = thread_cpu_seconds() - c0;
                 z[r] = e.pressure_Z();
-              });
+              }, {&z, &cpu});
               const auto [err, se] = rel_rms(z, zref);
               res.points.push_back({"eos", "edmd", D, T, mean_se(cpu).mean, err, se, Re});
             }

@@ -1,4 +1,4 @@
-// sim/sweep/ranks.cpp -- MPI session and dynamic task distribution (see ranks.hpp).
+// sim/ranks.cpp -- MPI session, dynamic task distribution, replicas over ranks (ranks.hpp).
 #include "ranks.hpp"
 
 #include <atomic>
@@ -92,7 +92,8 @@ void Session::abort(int code) const {
 
 DispatchStats dispatch(const Session& s, const std::vector<std::size_t>& todo,
                        const std::function<bool(std::size_t)>& work,
-                       const std::function<void(std::size_t, bool, int)>& done) {
+                       const std::function<void(std::size_t, bool, int)>& done,
+                       bool first_on_root) {
   DispatchStats st;
   if (!s.mpi() || s.size() == 1) {
     for (std::size_t t : todo) done(t, work(t), 0);
@@ -102,7 +103,9 @@ DispatchStats dispatch(const Session& s, const std::vector<std::size_t>& todo,
   using Clock = std::chrono::steady_clock;
   if (s.rank() == 0) {
     std::mutex take_m, done_m;
-    std::size_t next = 0;
+    // with first_on_root, todo[0] is taken before the coordinator can hand it out
+    const bool first = first_on_root && !todo.empty();
+    std::size_t next = first ? 1 : 0;
     const auto take = [&]() -> long long {
       std::lock_guard<std::mutex> lock(take_m);
       return next < todo.size() ? static_cast<long long>(todo[next++]) : -1;
@@ -145,6 +148,7 @@ DispatchStats dispatch(const Session& s, const std::vector<std::size_t>& todo,
       }
     });
     try {
+      if (first) report(todo[0], work(todo[0]), 0);
       for (long long t; !coordinator_error && (t = take()) >= 0;) {
         const bool ok = work(static_cast<std::size_t>(t));
         report(static_cast<std::size_t>(t), ok, 0);
@@ -173,6 +177,54 @@ DispatchStats dispatch(const Session& s, const std::vector<std::size_t>& todo,
   quiet_barrier();
 #endif
   return st;
+}
+
+void ReplicaRanks::run(int replicas, const std::function<void(int)>& body,
+                       std::span<std::vector<double>* const> results) {
+  std::vector<std::size_t> todo(static_cast<std::size_t>(replicas));
+  for (std::size_t r = 0; r < todo.size(); ++r) todo[r] = r;
+  std::vector<std::size_t> mine;
+  dispatch(
+      s_, todo,
+      [&](std::size_t r) {
+        body(static_cast<int>(r));
+        mine.push_back(r);
+        return true;
+      },
+      [](std::size_t, bool, int) {}, true);
+#ifdef HYPERGAS_MPI
+  if (!s_.mpi() || s_.size() == 1) return;
+  // Each rank's records (r, then results[j][r] for every j) to rank 0, then every array
+  // from rank 0 to all.
+  const std::size_t J = results.size();
+  std::vector<double> pack;
+  for (std::size_t r : mine) {
+    pack.push_back(static_cast<double>(r));
+    for (std::size_t j = 0; j < J; ++j) pack.push_back((*results[j])[r]);
+  }
+  int count = static_cast<int>(pack.size());
+  std::vector<int> counts(static_cast<std::size_t>(s_.size())), displs(counts.size());
+  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  std::vector<double> all;
+  if (s_.rank() == 0) {
+    int total = 0;
+    for (std::size_t i = 0; i < counts.size(); ++i) {
+      displs[i] = total;
+      total += counts[i];
+    }
+    all.resize(static_cast<std::size_t>(total));
+  }
+  MPI_Gatherv(pack.data(), count, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
+              MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  for (std::size_t i = 0; i < all.size(); i += J + 1) {
+    const auto r = static_cast<std::size_t>(all[i]);
+    for (std::size_t j = 0; j < J; ++j) (*results[j])[r] = all[i + 1 + j];
+  }
+  for (std::vector<double>* a : results)
+    MPI_Bcast(a->data(), static_cast<int>(a->size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+#else
+  (void)results;
+#endif
 }
 
 }  // namespace hypergas::cli::ranks

@@ -1,4 +1,4 @@
-// sim/sweep/ranks.hpp -- the processes of a sweep: MPI ranks under an MPI launcher, else
+// sim/ranks.hpp -- the processes of a job: MPI ranks under an MPI launcher, else
 // this one process; and the dynamic distribution of tasks over them.
 //
 // MPI is used only when the command was built with it (CMake found MPI: HYPERGAS_MPI) and
@@ -16,7 +16,10 @@
 
 #include <cstddef>
 #include <functional>
+#include <span>
 #include <vector>
+
+#include "hypergas/studies/replicas.hpp"
 
 namespace hypergas::cli::ranks {
 
@@ -53,13 +56,30 @@ struct DispatchStats {
   std::size_t requests = 0;      ///< requests those waits cover
 };
 
-/// Runs every task of `todo` (collective: every rank calls it with the same list) once,
-/// each on the first rank free. work(t) runs task t here and returns whether it succeeded;
-/// done(t, ok, rank) is then called on rank 0 (serialised: from one thread at a time).
-/// An exception from work() ends the whole job (Session::abort) after it reaches main()
-/// on the rank where it happened.
+/// Runs every task of `todo` (collective; only rank 0's list counts) once, each on the
+/// first rank free; with `first_on_root`, todo[0] runs on rank 0. work(t) runs task t here
+/// and returns whether it succeeded; done(t, ok, rank) is then called on rank 0
+/// (serialised: from one thread at a time). An exception from work() leaves dispatch on
+/// the rank where it happened (rank 0 first stops its coordinator); the caller then ends the
+/// job with Session::abort, since the other ranks still wait on it.
 DispatchStats dispatch(const Session& s, const std::vector<std::size_t>& todo,
                        const std::function<bool(std::size_t)>& work,
-                       const std::function<void(std::size_t, bool, int)>& done);
+                       const std::function<void(std::size_t, bool, int)>& done,
+                       bool first_on_root = false);
+
+/// The replicas of `run --replicas` and of `report` over the ranks (studies::ReplicaSpread):
+/// handed out as dispatch() hands out tasks, replica 0 on rank 0, the result arrays then
+/// gathered on rank 0 and broadcast to every rank. Results are the same numbers as on one
+/// process: each replica is a pure function of its seed.
+class ReplicaRanks final : public studies::ReplicaSpread {
+ public:
+  explicit ReplicaRanks(const Session& s) : s_(s) {}
+  void run(int replicas, const std::function<void(int)>& body,
+           std::span<std::vector<double>* const> results) override;
+  bool root() const override { return s_.rank() == 0; }
+
+ private:
+  const Session& s_;
+};
 
 }  // namespace hypergas::cli::ranks

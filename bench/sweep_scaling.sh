@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Wall time of `hypergas sweep` without MPI and under mpirun -np P, interleaved:
+#   long   24 DSMC cases of about 2 s each (3D hard spheres, N = 1e5, until = 160, seeds
+#          1..24): the sweep's speed-up on P ranks;
+#   tiny   200 cases of a few ms (2D, N = 50, until 0.2): cases per second, which the
+#          per-case costs (output folder, CSV, gnuplot) and the hand-out limit.
+# Each line: the kind, the way (none = no MPI; npP), the repetition, the job's wall time
+# (mpirun's start included), the sweep's own wall time and rank 0's mean time from a
+# request to the next case (`sweep --json`: coordination_ms). Repetitions alternate the
+# ways so that the machine's load changes hit them alike.
+# Usage: bench/sweep_scaling.sh [reps] [build dir] [max ranks]   (defaults 2, build, nproc)
+set -euo pipefail
+reps=${1:-2}
+B=${2:-build}
+maxp=${3:-$(nproc)}
+H=$(realpath "$B/sim/hypergas")
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+root=()
+[ "$(id -u)" -eq 0 ] && root=(--allow-run-as-root)
+cat > "$tmp/long.toml" <<'PLAN'
+engine = "dsmc"
+dim = 3
+n = 100000
+until = 160
+[sweep]
+seed = { from = 1, to = 24, step = 1 }
+PLAN
+cat > "$tmp/tiny.toml" <<'PLAN'
+engine = "dsmc"
+dim = 2
+n = 50
+until = 0.2
+[sweep]
+seed = { from = 1, to = 200, step = 1 }
+PLAN
+ways=(none)
+for ((p = 1; p <= maxp; ++p)); do ways+=("np$p"); done
+printf '%-5s %-5s %3s %9s %9s %15s\n' kind way rep job_s sweep_s coordination_ms
+for kind in long tiny; do
+  for ((r = 0; r < reps; ++r)); do
+    for way in "${ways[@]}"; do
+      out="$tmp/$kind-$way-$r"
+      cmd=("$H" sweep "$tmp/$kind.toml" --out "$out" --json)
+      [ "$way" != none ] && cmd=(mpirun "${root[@]}" --oversubscribe -np "${way#np}" "${cmd[@]}")
+      t0=$(date +%s.%N)
+      last=$("${cmd[@]}" 2>/dev/null | tail -1)
+      t1=$(date +%s.%N)
+      python3 -c '
+import json, sys
+j = json.loads(sys.argv[1])
+print("%-5s %-5s %3d %9.3f %9.3f %15.3f" % (sys.argv[2], sys.argv[3], int(sys.argv[4]),
+      float(sys.argv[6]) - float(sys.argv[5]), j["wall_s"], j["coordination_ms"]))' \
+        "$last" "$kind" "$way" "$r" "$t0" "$t1"
+      rm -rf "$out"
+    done
+  done
+done

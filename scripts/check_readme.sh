@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Runs the README's quick commands as written: every fenced ```sh block whose previous line
 # is `<!-- quick -->`, one line at a time, from a scratch folder in which `build` points to
-# the build folder (so `build/sim/hypergas ...` and relative --out folders work as in a
-# fresh clone). Fails on the first command that fails, naming it.
+# the build folder and `examples` to the repository's (so `build/sim/hypergas ...`, plan
+# files and relative --out folders work as in a fresh clone). Fails on the first command that fails, naming it.
 #   usage: check_readme.sh README.md BUILD_DIR
 set -euo pipefail
 readme=$(realpath "$1")
@@ -10,6 +10,7 @@ build=$(realpath "$2")
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 ln -s "$build" "$scratch/build"
+ln -s "$(dirname "$readme")/examples" "$scratch/examples"  # the sweep plans the README runs
 cd "$scratch"
 commands=$(awk '
   /^<!-- quick -->$/ { mark = 1; next }

@@ -169,6 +169,16 @@ void run_case(const Case& c) {
   run_command(c.options, nullptr, true);
 }
 
+/// After Ctrl-C (SIGINT/SIGTERM reach every rank): one message, then the job ends; mpirun
+/// reports MPI_Abort's code as its own, 130 without MPI.
+int interrupted_exit(const ranks::Session& session, const fs::path& dir) {
+  if (session.rank() == 0)
+    fmt::print(stderr, "hypergas: sweep interrupted; continue with: hypergas sweep --resume {}\n",
+               dir.string());
+  session.abort(130);
+  return 130;
+}
+
 }  // namespace
 
 CLI::App* add_sweep_command(CLI::App& app, SweepOptions& o) {
@@ -275,15 +285,9 @@ int sweep_command(const SweepOptions& opt, const ranks::Session& session) {
   try {
     stats = ranks::dispatch(session, todo, work, done);
   } catch (const InterruptedWithCheckpoint&) {
-    fmt::print(stderr, "hypergas: sweep interrupted; continue with: hypergas sweep --resume {}\n",
-               dir.string());
-    session.abort(130);
-    return 130;
+    return interrupted_exit(session, dir);
   } catch (const Interrupted&) {
-    fmt::print(stderr, "hypergas: sweep interrupted; continue with: hypergas sweep --resume {}\n",
-               dir.string());
-    session.abort(130);
-    return 130;
+    return interrupted_exit(session, dir);
   } catch (const std::exception& e) {
     fmt::print(stderr, "hypergas: sweep: error: {}\n", e.what());
     session.abort(1);

@@ -25,7 +25,9 @@ def _is_float(text):
 def _column(name, values):
     if name in _STRINGS:
         return np.array(values, dtype=str)
-    if name == "seed":  # unsigned 64-bit: may exceed 2^63, exact only as an integer
+    # unsigned 64-bit (the case's seed; a swept seed is `plan_seed`): may exceed 2^63,
+    # exact only as an integer
+    if name in ("seed", "plan_seed"):
         return np.array([int(v) for v in values], dtype=np.uint64)
     if name in _INTEGERS:
         return np.array([int(v) for v in values], dtype=np.int64)

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 
 #include <fmt/core.h>
@@ -82,6 +83,10 @@ std::string value_text(const options::Option& opt, const toml::node& v, const st
   bad(fmt::format("{}: {} takes a number", at, key));
 }
 
+/// x to 15 significant digits: range values meant as decimals (0.15) lose the last bit of
+/// their arithmetic (0.15000000000000002).
+double round15(double x) { return std::strtod(fmt::format("{:.15g}", x).c_str(), nullptr); }
+
 /// A number of a range table.
 double range_number(const toml::table& r, const char* k, const std::string& at) {
   const toml::node* n = r.get(k);
@@ -125,10 +130,11 @@ std::vector<std::string> range_values(const options::Option& opt, const toml::ta
     for (std::int64_t i = 0; i < k; ++i) {
       const double f = k == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(k - 1);
       double x = scale == "log" ? std::exp(std::log(from) + f * (std::log(to) - std::log(from)))
-                                : from + f * (to - from);
+                                : (from * static_cast<double>(k - 1 - i) +
+                                   to * static_cast<double>(i)) / static_cast<double>(k - 1);
       if (i == k - 1) x = to;  // the end exactly
       if (i == 0) x = from;
-      xs.push_back(x);
+      xs.push_back(round15(x));
     }
   } else {
     if (scale != "linear") bad(fmt::format("{}: scale applies to count ranges only", at));
@@ -137,7 +143,7 @@ std::vector<std::string> range_values(const options::Option& opt, const toml::ta
       bad(fmt::format("{}: step must be non-zero and lead from `from` to `to`", at));
     const double k = std::floor((to - from) / step + 1e-9);
     if (k >= 100000) bad(fmt::format("{}: the range of {} has over 100000 values", at, key));
-    for (int i = 0; i <= static_cast<int>(k); ++i) xs.push_back(from + i * step);
+    for (int i = 0; i <= static_cast<int>(k); ++i) xs.push_back(round15(from + i * step));
   }
   std::vector<std::string> out;
   for (double x : xs) {

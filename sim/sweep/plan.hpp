@@ -16,8 +16,8 @@
 //
 // Ranges: { from = a, to = b, count = k } gives k evenly spaced values from a to b (both
 // included; scale = "log" spaces them evenly in log); { from = a, to = b, step = s } gives
-// a, a + s, ... up to b (included within 1e-9 of a step). Integer options take integer
-// values only.
+// a, a + s, ... up to b (included within 1e-9 of a step). Range values are rounded to 15
+// significant digits (0.15, not 0.15000000000000002); integer options take integers only.
 //
 // The cases are the product of the swept lists, the first swept key varying slowest and the
 // replica fastest, numbered from 0 in that order (case ids "0000", "0001", ...). Replica r of

@@ -92,6 +92,13 @@ void write_atomic(const fs::path& dir, const std::string& name, const std::strin
   fs::rename(tmp, file);
 }
 
+/// The column of swept option `s`: its Python name, except `seed`, whose column is
+/// `plan_seed` (the plan's value; `seed` is the case's own, derived for replicas).
+std::string column(const Swept& s) {
+  const std::string n = options::python_name(*s.option);
+  return n == "seed" ? "plan_seed" : n;
+}
+
 std::string csv_text(const std::string& s) { return csv_field(s.empty() || s[0] != '"' ? "\"" + s + "\"" : s); }
 
 }  // namespace
@@ -163,7 +170,7 @@ void Tables::add(std::size_t i) {
 
 std::vector<std::string> Tables::fields() const {
   std::set<std::string> taken = {"case", "replica", "seed", "group", "replicas"};
-  for (const Swept& s : plan_.swept) taken.insert(options::python_name(*s.option));
+  for (const Swept& s : plan_.swept) taken.insert(column(s));
   std::vector<std::string> out;
   for (const auto& row : rows_)
     if (row)
@@ -175,7 +182,7 @@ std::vector<std::string> Tables::fields() const {
 void Tables::write() const {
   const std::vector<std::string> cols = fields();
   std::string head = "case";
-  for (const Swept& s : plan_.swept) head += "," + options::python_name(*s.option);
+  for (const Swept& s : plan_.swept) head += "," + column(s);
   head += ",replica,seed";
   std::string csv = head;
   for (const auto& c : cols) csv += "," + c;
@@ -210,7 +217,7 @@ void Tables::write() const {
     if (any && all) numeric.push_back(k);
   }
   std::string g = "group";
-  for (const Swept& s : plan_.swept) g += "," + options::python_name(*s.option);
+  for (const Swept& s : plan_.swept) g += "," + column(s);
   g += ",replicas";
   for (const auto& k : numeric) g += fmt::format(",{}_mean,{}_se", k, k);
   g += "\n";
@@ -300,8 +307,11 @@ bool Tables::plot() const {
     return false;
   }
   std::string s = "set terminal pngcairo size 900,600 noenhanced\nset output '.sweep.png.tmp'\n";
-  s += fmt::format("set xlabel '{}'\nset ylabel '{}'\nset grid\nset key outside right\n",
+  s += fmt::format("set xlabel '{}'\nset ylabel '{}'\nset grid\nset key outside right\n"
+                   "set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05\n",
                    options::python_name(*xs.option), plan_.plot_y);
+  if (plan_.replicas > 1)
+    s += fmt::format("set title 'mean and standard error of {} replicas'\n", plan_.replicas);
   for (std::size_t k = 0; k < blocks.size(); ++k)
     s += fmt::format("$c{} << EOD\n{}EOD\n", k, blocks[k]);
   s += "plot ";

@@ -1,8 +1,8 @@
 // sim/sweep/tables.hpp -- DIR/sweep.csv, DIR/groups.csv and DIR/sweep.png from the cases'
 // summary.json files.
 //
-// sweep.csv has one row per finished case, in case order: `case`, the swept options, then
-// `replica` and `seed`, then the summary's fields (the union over the cases, in order of
+// sweep.csv has one row per finished case, in case order: `case`, the swept options (a
+// swept seed as `plan_seed`), then `replica` and `seed` (the case's own), then the summary's fields (the union over the cases, in order of
 // first appearance; numbers verbatim from summary.json, null as an empty field). Fields that
 // measure the process rather than the physics (wall_s, collisions_per_s, engine_s,
 // analysis_s, output_s, checkpoints, resumes, peak_rss_bytes_per_particle) are left out, so

@@ -1,7 +1,9 @@
-// tests/cli/run_cli.hpp -- runs the built `hypergas` binary (path from HYPERGAS_CLI_PATH) with
-// given arguments and captures its exit code, stdout and stderr, for the CLI tests.
+// tests/cli/run_cli.hpp -- runs the built `hypergas` binary (path from HYPERGAS_CLI_PATH), or
+// another program such as an MPI launcher running it, with given arguments and captures its
+// exit code, stdout and stderr, for the CLI tests.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <csignal>
@@ -63,18 +65,31 @@ class Scratch {
   fs::path path_;
 };
 
-/// A running `hypergas args...` in folder `cwd`, stdin /dev/null (so stderr is not a
-/// terminal: no progress bar), stdout and stderr captured in files of `cwd`. The tests send
-/// it a signal only once a readiness signal holds (wait_until), never after a guessed time.
-/// A child still running at destruction is killed (SIGKILL) and reaped.
+/// How a Child starts: which program, and whether in a session of its own.
+struct Spawn {
+  /// The program to run with the arguments (argv[0]); by default the `hypergas` command.
+  std::string program = HYPERGAS_CLI_PATH;
+  /// setsid() in the child before exec: the program and every process it starts (that does
+  /// not leave the session itself) share a session and a process group whose id is the
+  /// child's pid, so that Child::kill_session() reaches all of them. An MPI launcher moves
+  /// each rank into a process group of its own (Open MPI does), but not out of the session.
+  bool own_session = false;
+};
+
+/// A running `hypergas args...` (or `how.program args...`) in folder `cwd`, stdin /dev/null
+/// (so stderr is not a terminal: no progress bar), stdout and stderr captured in files of
+/// `cwd`. The tests send it a signal only once a readiness signal holds (wait_until), never
+/// after a guessed time. A child still running at destruction is killed (SIGKILL, with its
+/// whole session if it has one of its own) and reaped.
 class Child {
  public:
-  Child(const std::vector<std::string>& args, const fs::path& cwd) {
+  Child(const std::vector<std::string>& args, const fs::path& cwd, const Spawn& how = {})
+      : own_session_(how.own_session) {
     static int counter = 0;
     const std::string tag = std::to_string(::getpid()) + "-" + std::to_string(counter++);
     out_ = cwd / (".stdout-" + tag + ".txt");
     err_ = cwd / (".stderr-" + tag + ".txt");
-    std::vector<std::string> argv_s{HYPERGAS_CLI_PATH};
+    std::vector<std::string> argv_s{how.program};
     argv_s.insert(argv_s.end(), args.begin(), args.end());
     std::vector<char*> argv;
     for (auto& a : argv_s) argv.push_back(a.data());
@@ -82,6 +97,7 @@ class Child {
     const std::string cwd_s = cwd.string(), out_s = out_.string(), err_s = err_.string();
     pid_ = ::fork();
     if (pid_ == 0) {
+      if (how.own_session && ::setsid() < 0) ::_exit(126);
       const int fo = ::open(out_s.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       const int fe = ::open(err_s.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       const int fi = ::open("/dev/null", O_RDONLY);
@@ -96,6 +112,7 @@ class Child {
   Child(const Child&) = delete;
   Child& operator=(const Child&) = delete;
   ~Child() {
+    if (own_session_ && pid_ > 0) kill_session(SIGKILL);
     if (pid_ > 0 && !reaped_) {
       ::kill(pid_, SIGKILL);
       ::waitpid(pid_, &status_, 0);
@@ -144,6 +161,40 @@ class Child {
     if (running()) ::kill(pid_, sig);
   }
 
+  /// For a child started with Spawn::own_session: sends `sig` to its process group and to
+  /// every live process of its session, again and again until none is left alive (zombies
+  /// aside: they hold no files or locks), or `limit_s` passes; returns whether none is
+  /// left. With SIGKILL this ends an MPI job as a whole: the launcher and every rank, and
+  /// what they started. Reap the child with wait() after.
+  bool kill_session(int sig = SIGKILL, double limit_s = 60.0) {
+    if (!own_session_ || pid_ <= 0) return false;
+    const auto start = std::chrono::steady_clock::now();
+    for (;;) {
+      if (!reaped_) ::kill(-pid_, sig);
+      bool alive = false;
+      std::error_code ec;
+      for (const auto& e : fs::directory_iterator("/proc", ec)) {
+        const std::string name = e.path().filename().string();
+        if (name.empty() || name.find_first_not_of("0123456789") != std::string::npos) continue;
+        // /proc/<pid>/stat: pid (comm) state ppid pgrp session ...; comm may hold spaces.
+        const std::string st = slurp(e.path() / "stat");
+        const auto close = st.rfind(')');
+        if (close == std::string::npos) continue;
+        std::istringstream fields(st.substr(close + 1));
+        char state = 0;
+        long ppid = 0, pgrp = 0, session = 0;
+        if (!(fields >> state >> ppid >> pgrp >> session)) continue;
+        if (session != pid_ || state == 'Z' || state == 'X') continue;
+        alive = true;
+        ::kill(static_cast<pid_t>(std::stol(name)), sig);
+      }
+      if (!alive) return true;
+      const std::chrono::duration<double> t = std::chrono::steady_clock::now() - start;
+      if (t.count() > limit_s) return false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  }
+
   /// Waits for the command to end and returns its exit code and output.
   Result wait() {
     if (!reaped_ && pid_ > 0) {
@@ -160,6 +211,7 @@ class Child {
 
  private:
   pid_t pid_ = -1;
+  bool own_session_ = false;
   int status_ = 0;
   bool reaped_ = false;
   fs::path out_, err_;
@@ -168,6 +220,29 @@ class Child {
 /// Runs `hypergas args...` in folder `cwd` to its end.
 inline Result run(const std::vector<std::string>& args, const fs::path& cwd) {
   return Child(args, cwd).wait();
+}
+
+/// summary.json without the fields that measure the process rather than the physics (wall
+/// and stage times, speed, memory, checkpoint and resume counts).
+inline std::string physics_summary(const fs::path& file) {
+  static const std::vector<std::string> skip = {
+      "\"wall_s\"",   "\"collisions_per_s\"", "\"engine_s\"",  "\"analysis_s\"",
+      "\"checkpoints\"", "\"resumes\"",       "\"peak_rss_bytes_per_particle\"",
+      "\"output_s\""};
+  std::string text = slurp(file), out;
+  // The file is one object on one line, pairs separated by `, "` (analysis/output.cpp).
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    std::size_t next = text.find(", \"", pos);
+    if (next == std::string::npos) next = text.size();
+    const std::string pair = text.substr(pos, next - pos);
+    const bool drop = std::any_of(skip.begin(), skip.end(), [&](const std::string& k) {
+      return pair.find(k) != std::string::npos;
+    });
+    if (!drop) out += pair + "\n";
+    pos = next + 2;
+  }
+  return out;
 }
 
 /// The identity of a file's current content as the tests see it (inode, modification time

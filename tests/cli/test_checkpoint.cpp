@@ -33,28 +33,6 @@ namespace {
 
 using namespace cli_test;
 
-/// summary.json without the fields that measure the process rather than the physics.
-std::string physics_summary(const fs::path& file) {
-  static const std::vector<std::string> skip = {
-      "\"wall_s\"",   "\"collisions_per_s\"", "\"engine_s\"",  "\"analysis_s\"",
-      "\"checkpoints\"", "\"resumes\"",       "\"peak_rss_bytes_per_particle\"",
-      "\"output_s\""};
-  std::string text = slurp(file), out;
-  // The file is one object on one line, pairs separated by `, "` (analysis/output.cpp).
-  std::size_t pos = 0;
-  while (pos < text.size()) {
-    std::size_t next = text.find(", \"", pos);
-    if (next == std::string::npos) next = text.size();
-    const std::string pair = text.substr(pos, next - pos);
-    const bool drop = std::any_of(skip.begin(), skip.end(), [&](const std::string& k) {
-      return pair.find(k) != std::string::npos;
-    });
-    if (!drop) out += pair + "\n";
-    pos = next + 2;
-  }
-  return out;
-}
-
 const std::vector<std::string> compared = {"moments.csv", "speed_histogram.csv", "vacf.csv"};
 
 /// The integer field `key` of summary.json (one object on one line), or -1 if absent.

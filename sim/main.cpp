@@ -82,6 +82,13 @@ int main(int argc, char** argv) {
   // Under mpirun/srun (and built with MPI): one MPI session for the commands that use ranks;
   // `run --replicas` and `report` hand their replicas out over the ranks.
   const bool ranked = run_app->parsed() || report_app->parsed() || sweep_app->parsed();
+  if (ranked && !ranks::built_with_mpi() && ranks::launcher_size() > 1) {
+    fmt::print(stderr, "hypergas: this build has no MPI (CMake found none when it was "
+                       "configured), so its {} processes would each run the whole job; run it "
+                       "without mpirun/srun, or install libopenmpi-dev and rebuild\n",
+               ranks::launcher_size());
+    return 2;
+  }
   std::optional<ranks::Session> session;
   if (ranked) session.emplace();
   std::optional<ranks::ReplicaRanks> spread;

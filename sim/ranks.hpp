@@ -6,9 +6,10 @@
 // variables); otherwise the same command runs every task in this process. Tasks are
 // handed out one at a time by rank 0: a rank that finishes a task asks for the next, so
 // long and short tasks balance without any estimate of their cost. Rank 0 runs tasks too;
-// its coordinator is a second thread that polls for requests every 0.5 ms
-// (MPI_THREAD_SERIALIZED: that thread makes the only MPI calls while tasks run), so it
-// costs a few per cent of a core and adds at most about 0.5 ms to each hand-out. Ranks
+// its coordinator is a second thread that polls for requests, every 0.25 ms after a
+// request and backing off to every 4 ms while none comes (MPI_THREAD_SERIALIZED: that
+// thread makes the only MPI calls while tasks run), so it costs about 1 % of a core and
+// adds at most 4 ms to a hand-out. Ranks
 // that run out of tasks wait in a polled, non-blocking barrier (MPI_Ibarrier, 1 ms sleeps)
 // rather than spinning in MPI_Finalize, so an oversubscribed node gives their cores to the
 // ranks still working.
@@ -27,6 +28,9 @@ namespace hypergas::cli::ranks {
 bool built_with_mpi();
 /// Whether an MPI launcher started this process (and the command was built with MPI).
 bool launched();
+/// The number of processes a launcher says it started (its environment), 1 if none: with
+/// a command built without MPI, more than 1 means every process would run the whole job.
+int launcher_size();
 
 /// MPI_Init_thread at construction and MPI_Finalize at destruction when launched();
 /// otherwise one process of rank 0. One per process.

@@ -662,3 +662,34 @@ TEST_CASE("A case that fails at run time: exit 1, the others finish, --resume ru
   CHECK(json_int(last_line(again.out), "kept") == 2);
   CHECK(slurp(dir / "sweep.csv") == complete);
 }
+
+TEST_CASE("run --replicas under mpirun -np 2 writes the files of one process", "[sweep]") {
+  // Replicas 1..3 run on whichever rank is free (ranks.hpp: ReplicaRanks) and only their
+  // numbers travel to rank 0, which runs replica 0 and writes the files; each replica is a
+  // pure function of its seed, so the files equal those of one process with 4 threads' worth
+  // of replicas, and summary.json differs only in its process keys.
+  if (mpiexec.empty()) {
+    WARN(no_mpi);
+    return;
+  }
+  Scratch s("sweep-replicas");
+  const std::vector<std::string> args = {"run", "--dim", "3", "--n", "3000", "--until", "2",
+                                         "--replicas", "5", "--seed", "11", "--out"};
+  auto with_out = [&](const std::string& out) {
+    std::vector<std::string> a = args;
+    a.push_back(out);
+    return a;
+  };
+  const Result one = run(with_out("one"), s.path());
+  INFO(one.out << one.err);
+  REQUIRE(one.code == 0);
+  const Result two = run_mpi(2, with_out("two"), s.path());
+  INFO(two.out << two.err);
+  REQUIRE(two.code == 0);
+  CHECK(!fs::exists(s.path() / "two" / "checkpoint.hgck"));
+  for (const char* f : {"moments.csv", "speed_histogram.csv"})
+    CHECK(slurp(s.path() / "one" / f) == slurp(s.path() / "two" / f));
+  const std::string a = physics_summary(s.path() / "one" / "summary.json");
+  CHECK(a.find("\"kurtosis_x_replica_se\"") != std::string::npos);
+  CHECK(a == physics_summary(s.path() / "two" / "summary.json"));
+}

@@ -52,6 +52,7 @@ double summary_number(const analysis::JsonObject& o, const std::string& key) {
     if (k == key) {
       if (const auto* d = std::get_if<double>(&v)) return *d;
       if (const auto* i = std::get_if<std::int64_t>(&v)) return static_cast<double>(*i);
+      if (const auto* u = std::get_if<std::uint64_t>(&v)) return static_cast<double>(*u);
     }
   return std::numeric_limits<double>::quiet_NaN();
 }
@@ -163,7 +164,7 @@ RunRecord run(const RunOptions& o, const dsmc::Config& cfg, bool progress, RunCo
       {"engine", std::string(registry::name(registry::EngineKind::dsmc))},
       {"model", o.model},
       {"n", static_cast<std::int64_t>(o.n)},
-      {"seed", static_cast<std::int64_t>(o.seed)},
+      {"seed", o.seed},  // unsigned 64-bit: seeds of replicas are often above 2^63
       {"collisions", total},
       {"wall_s", wall},
       {"collisions_per_s", total_rate},

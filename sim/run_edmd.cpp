@@ -100,7 +100,7 @@ RunRecord run(const RunOptions& o, const edmd::Config& cfg, bool progress, RunCo
       {"engine", std::string(registry::name(registry::EngineKind::edmd))},
       {"model", std::string(dsmc::HardSpheres::name)},
       {"n", static_cast<std::int64_t>(o.n)},
-      {"seed", static_cast<std::int64_t>(o.seed)},
+      {"seed", o.seed},  // unsigned 64-bit
       {"collisions", coll},
       {"wall_s", wall},
       {"collisions_per_s", engine_s > 0.0 ? static_cast<double>(coll) / engine_s : 0.0},

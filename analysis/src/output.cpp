@@ -156,7 +156,7 @@ std::string to_json(const JsonObject& fields) {
           using T = std::decay_t<decltype(v)>;
           if constexpr (std::is_same_v<T, bool>) {
             os << (v ? "true" : "false");
-          } else if constexpr (std::is_same_v<T, std::int64_t>) {
+          } else if constexpr (std::is_integral_v<T>) {  // int64, and uint64 (seeds)
             os << v;
           } else if constexpr (std::is_same_v<T, double>) {
             if (std::isfinite(v))

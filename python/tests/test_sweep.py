@@ -120,3 +120,29 @@ def test_errors(sweep, tmp_path):
     (sweep / "sweep.csv").write_text("case,dt\n0000,0.1,9\n")
     with pytest.raises(ValueError, match="row 1: 3 fields, the header has 2"):
         hg.read_sweep(sweep, frame=False)
+
+
+def test_a_sweep_of_the_command_reads_back(cli, tmp_path):
+    """A sweep written by `hypergas sweep` reads into arrays that equal its cases' summaries."""
+    import json
+    import subprocess
+
+    plan = tmp_path / "plan.toml"
+    plan.write_text('engine = "dsmc"\ndim = 2\nuntil = 0.5\nseed = 5\n'
+                    "[sweep]\nn = [300, 600]\nreplicas = 2\n")
+    subprocess.run([cli, "sweep", str(plan), "--out", str(tmp_path / "s")], check=True,
+                   capture_output=True)
+    t = hg.read_sweep(tmp_path / "s", frame=False)
+    assert t["case"].tolist() == ["0000", "0001", "0002", "0003"]
+    assert t["n"].tolist() == [300.0, 300.0, 600.0, 600.0]
+    assert t["replica"].tolist() == [0, 1, 0, 1]
+    assert t["seed"].dtype == np.uint64
+    for i, case in enumerate(t["case"]):
+        summary = json.loads((tmp_path / "s" / "cases" / case / "summary.json").read_text())
+        assert int(t["seed"][i]) == summary["seed"]
+        assert t["kurtosis_x"][i] == summary["kurtosis_x"]  # verbatim: the same double
+    g = hg.read_sweep(tmp_path / "s", table="groups", frame=False)
+    assert g["replicas"].tolist() == [2, 2]
+    np.testing.assert_allclose(g["kurtosis_x_mean"],
+                               [t["kurtosis_x"][:2].mean(), t["kurtosis_x"][2:].mean()],
+                               rtol=1e-14)

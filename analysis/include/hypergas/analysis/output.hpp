@@ -29,7 +29,7 @@ void write_csv(const std::string& path, const std::vector<std::string>& columns,
                const std::vector<std::vector<double>>& rows);
 
 /// A JSON value of a summary field.
-using JsonValue = std::variant<bool, std::int64_t, double, std::string>;
+using JsonValue = std::variant<bool, std::int64_t, std::uint64_t, double, std::string>;
 /// An ordered list of (key, value) pairs: one flat JSON object.
 using JsonObject = std::vector<std::pair<std::string, JsonValue>>;
 

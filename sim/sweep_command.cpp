@@ -299,9 +299,10 @@ int sweep_command(const SweepOptions& opt, const ranks::Session& session) {
   const bool plotted = !plan.plot_y.empty() && tables.plot();
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
   const double per_handout_ms = stats.requests ? 1e3 * stats.wait_s / stats.requests : 0.0;
-  fmt::print("sweep {}: {} cases: {} run now ({} from checkpoints), {} kept, {} failed; "
+  fmt::print("sweep {}: {} case{}: {} run now ({} from checkpoints), {} kept, {} failed; "
              "{} rank{}, {:.3g} s\n",
-             dir.string(), cases.size(), todo.size() - failed, with_checkpoint, kept, failed,
+             dir.string(), cases.size(), cases.size() == 1 ? "" : "s", todo.size() - failed,
+             with_checkpoint, kept, failed,
              session.size(), session.size() == 1 ? "" : "s", wall);
   if (stats.requests)
     fmt::print("  coordination: {:.3f} ms from request to next case (mean of {} requests)\n",

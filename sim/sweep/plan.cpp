@@ -26,7 +26,6 @@ std::string where(const std::string& name, const toml::source_region& s) {
 /// The entries of a table in the order they are written (toml++ keeps them sorted by key).
 std::vector<std::pair<std::string, const toml::node*>> in_file_order(const toml::table& t) {
   std::vector<std::pair<std::string, const toml::node*>> v;
-  std::vector<toml::source_position> at;
   for (auto&& [k, node] : t) v.emplace_back(std::string(k.str()), &node);
   std::stable_sort(v.begin(), v.end(), [&](const auto& a, const auto& b) {
     const auto& pa = t.find(a.first)->first.source().begin;

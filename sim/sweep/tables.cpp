@@ -53,15 +53,19 @@ std::string unquote(const std::string& j) {
   return s;
 }
 
-/// A JSON value as a CSV field: strings decoded and quoted where needed, null empty.
-std::string csv_field(const std::string& json) {
-  if (json == "null") return "";
-  if (json.empty() || json[0] != '"') return json;
-  const std::string s = unquote(json);
+/// Text as a CSV field: quoted (quotes doubled) where it holds a comma, quote or newline.
+std::string csv_text(const std::string& s) {
   if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
   std::string q = "\"";
   for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
   return q + "\"";
+}
+
+/// A JSON value as a CSV field: strings decoded and quoted where needed, null empty.
+std::string csv_field(const std::string& json) {
+  if (json == "null") return "";
+  if (json.empty() || json[0] != '"') return json;
+  return csv_text(unquote(json));
 }
 
 /// The number a JSON value holds, or nothing (strings, null, booleans).
@@ -99,7 +103,6 @@ std::string column(const Swept& s) {
   return n == "seed" ? "plan_seed" : n;
 }
 
-std::string csv_text(const std::string& s) { return csv_field(s.empty() || s[0] != '"' ? "\"" + s + "\"" : s); }
 
 }  // namespace
 

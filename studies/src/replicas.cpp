@@ -23,11 +23,6 @@ void set_replica_spread(ReplicaSpread* s) { spread = s; }
 bool replica_root() { return !spread || spread->root(); }
 
 void for_each_replica(int replicas, int threads, const std::function<void(int)>& body,
-                      std::initializer_list<std::vector<double>*> results) {
-  for_each_replica(replicas, threads, body, std::vector<std::vector<double>*>(results));
-}
-
-void for_each_replica(int replicas, int threads, const std::function<void(int)>& body,
                       const std::vector<std::vector<double>*>& results) {
   if (spread && !results.empty()) {
     spread->run(replicas, body, results);

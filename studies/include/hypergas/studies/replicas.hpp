@@ -9,7 +9,6 @@
 
 #include <cstdint>
 #include <functional>
-#include <initializer_list>
 #include <span>
 #include <utility>
 #include <vector>
@@ -48,10 +47,7 @@ std::uint64_t replica_seed(std::uint64_t seed, int r);
 /// [r]), the replicas run over its processes instead and the results reach every process;
 /// without `results` they run here.
 void for_each_replica(int replicas, int threads, const std::function<void(int)>& body,
-                      std::initializer_list<std::vector<double>*> results = {});
-/// As above with the result arrays in a vector.
-void for_each_replica(int replicas, int threads, const std::function<void(int)>& body,
-                      const std::vector<std::vector<double>*>& results);
+                      const std::vector<std::vector<double>*>& results = {});
 
 /// Constructs `replicas` engines of type EngineT from `cfg` (seed replaced by
 /// replica_seed(cfg.seed, r)) and calls body(r, engine) for each, through

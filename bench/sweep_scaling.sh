@@ -22,22 +22,13 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 root=()
 [ "$(id -u)" -eq 0 ] && root=(--allow-run-as-root)
-cat > "$tmp/long.toml" <<'PLAN'
-engine = "dsmc"
-dim = 3
-n = 100000
-until = 540
-[sweep]
-seed = { from = 1, to = 24, step = 1 }
-PLAN
-cat > "$tmp/tiny.toml" <<'PLAN'
-engine = "dsmc"
-dim = 2
-n = 50
-until = 0.2
-[sweep]
-seed = { from = 1, to = 200, step = 1 }
-PLAN
+# plan NAME DIM N UNTIL CASES: DSMC cases that differ in their seed (1..CASES)
+plan() {
+  printf 'engine = "dsmc"\ndim = %s\nn = %s\nuntil = %s\n[sweep]\nseed = { from = 1, to = %s, step = 1 }\n' \
+    "$2" "$3" "$4" "$5" > "$tmp/$1.toml"
+}
+plan long 3 100000 540 24
+plan tiny 2 50 0.2 200
 ways=(none)
 for ((p = 1; p <= maxp; ++p)); do ways+=("np$p"); done
 printf '%-5s %-5s %3s %9s %9s %15s\n' kind way rep job_s sweep_s coordination_ms

@@ -26,6 +26,7 @@
 #include "hypergas/studies/gnuplot.hpp"
 #include "output_dir.hpp"
 #include "plot_scripts.hpp"
+#include "run_summary.hpp"
 #include "progress.hpp"
 
 namespace hypergas::cli {
@@ -132,11 +133,11 @@ int default_scene(const SceneOptions& s) {
   for (std::size_t k = 0; k < dims.size(); ++k) {
     const int d = dims[k];
     const RunRecord& r = records[k];
-    const auto cpp = r.moments.column("collisions_per_particle");
-    const double t_reach = first_crossing(cpp, r.moments.column("l1_speed"), l1_threshold);
-    const double ks = r.moments.column("ks_p_speed").back();
-    const double kurt = r.moments.column("kurtosis_x").back();
-    const double kurt_err = r.moments.column("kurtosis_x_err").back();
+    const auto cpp = r.moments().recorder().column("collisions_per_particle");
+    const double t_reach = first_crossing(cpp, r.moments().recorder().column("l1_speed"), l1_threshold);
+    const double ks = r.moments().recorder().column("ks_p_speed").back();
+    const double kurt = r.moments().recorder().column("kurtosis_x").back();
+    const double kurt_err = r.moments().recorder().column("kurtosis_x_err").back();
     const double rate = summary_number(r.summary, "collisions_per_s");
     const double n = summary_number(r.summary, "n");
     const std::string reach =
@@ -146,8 +147,8 @@ int default_scene(const SceneOptions& s) {
                kurt_err, rate);
     table.push_back({static_cast<double>(d), n, d == 1 ? mass_ratio_1d : 1.0, t_reach,
                      cpp.back(), ks, kurt, kurt_err, rate});
-    r.moments.write_moments_csv(out.staged(fmt::format("relaxation_D{}.csv", d)).string());
-    r.moments.write_speed_histogram_csv(
+    r.moments().recorder().write_moments_csv(out.staged(fmt::format("relaxation_D{}.csv", d)).string());
+    r.moments().recorder().write_speed_histogram_csv(
         out.staged(fmt::format("speed_histogram_D{}.csv", d)).string());
   }
   analysis::write_csv(out.staged("summary.csv").string(),

@@ -1,38 +1,32 @@
-// sim/engine_runs.hpp -- one run of an engine, as `hypergas run` and the default scene use it.
+// sim/engine_runs.hpp -- one run of an engine, as `hypergas run`, `resume`, the sweep and the
+// default scene use it.
 //
-// `simulate` instantiates the engine for the requested (D, model, features) through
-// registry::dispatch (hypergas/registry.hpp), runs it with the analysis recorders attached
-// and returns the recorders and the summary fields; the callers decide which files to
-// write. All engine template instantiations of the command live in run_dsmc.cpp and
-// run_edmd.cpp.
+// `simulate` reaches the engine the options name through registry::with_engine
+// (hypergas/engines.hpp), runs it with the run's outputs attached (outputs/output.hpp) and
+// returns the outputs, finished, and the summary; the callers write the files. The engine
+// runs are compiled once per dimension: run_dim.cpp.in, generated for each D of the one
+// instantiation list (cmake/HypergasDims.cmake).
 #pragma once
 
 #include <memory>
 #include <optional>
+#include <vector>
 
-#include "hypergas/analysis/moments_recorder.hpp"
 #include "hypergas/analysis/output.hpp"
-#include "hypergas/analysis/helfand_recorder.hpp"
-#include "hypergas/analysis/structure_recorder.hpp"
-#include "hypergas/analysis/transport_recorder.hpp"
-#include "hypergas/analysis/vacf_recorder.hpp"
 #include "hypergas/conserved.hpp"
 #include "options.hpp"
+#include "outputs/moments.hpp"
+#include "outputs/output.hpp"
 #include "run_driver.hpp"
 
 namespace hypergas::cli {
 
 /// What one engine run produced.
 struct RunRecord {
-  analysis::MomentsRecorder moments;              ///< one row per sampling time
-  std::unique_ptr<analysis::VacfRecorder> vacf;   ///< EDMD only (nullptr for DSMC)
-  /// DSMC with --transport: the Green-Kubo coefficients, finished (else nullptr)
-  std::unique_ptr<analysis::TransportRecorder> transport;
-  /// EDMD with --transport: Einstein-Helfand and Green-Kubo coefficients, finished
-  std::unique_ptr<analysis::HelfandRecorder> helfand;
-  /// EDMD with --structure: g(r) and S(k), finished
-  std::unique_ptr<analysis::StructureRecorder> structure;
+  std::vector<std::unique_ptr<Output>> outputs;  ///< finished, in the order of outputs/list.cpp
   analysis::JsonObject summary;  ///< summary.json: the contract's keys first, then extras
+  /// The moments output (every run has it, first).
+  const MomentsOutput& moments() const { return static_cast<const MomentsOutput&>(*outputs.front()); }
 };
 
 /// Checkpoints of a run: where they go (none by default) and, for `hypergas resume`, the
@@ -50,17 +44,18 @@ RunRecord simulate(const RunOptions& o, bool progress, RunContext& ctx);
 RunRecord simulate(const RunOptions& o, bool progress);
 
 // A checkpoint after its header (save_header) holds, in this order: the loop state, the
-// conserved sums at t = 0, the recorders, the engine. start_engine reads that order and
-// save_run writes it, for both engines.
+// conserved sums at t = 0, the checkpointable outputs in list order, the engine.
+// start_engine reads that order and save_run writes it, for both engines.
 
 /// Constructs `e` from cfg and sets c0 to its conserved sums; or, resuming (ctx.resume),
-/// restores st, c0, the recorders and the engine from the checkpoint. Returns the engine.
-template <class Engine, class... Recorders>
+/// restores st, c0, the outputs and the engine from the checkpoint. Returns the engine.
+template <class Engine>
 Engine& start_engine(std::optional<Engine>& e, const typename Engine::Config& cfg,
                      RunContext& ctx, DriverState& st, Conserved<Engine::dim>& c0,
-                     Recorders&... rec) {
+                     const std::vector<std::unique_ptr<Output>>& outputs) {
   if (ctx.resume) {
-    (*ctx.resume)(st, c0, rec...);
+    (*ctx.resume)(st, c0);
+    for (const auto& out : outputs) out->load(*ctx.resume);
     e.emplace(cfg, *ctx.resume);
     ctx.resume->finish();
     ++st.resumes;
@@ -71,24 +66,33 @@ Engine& start_engine(std::optional<Engine>& e, const typename Engine::Config& cf
   return *e;
 }
 
-/// Writes a checkpoint of the run (options, loop state, c0, recorders, engine).
-template <class Engine, class... Recorders>
+/// Writes a checkpoint of the run (options, loop state, c0, outputs, engine).
+template <class Engine>
 void save_run(checkpoint::Writer& w, const RunOptions& o, const DriverState& st,
-              const Conserved<Engine::dim>& c0, const Engine& e, const Recorders&... rec) {
+              const Conserved<Engine::dim>& c0, const Engine& e,
+              const std::vector<std::unique_ptr<Output>>& outputs) {
   save_header(w, o);
-  w(st, c0, rec..., e);
+  w(st, c0);
+  for (const auto& out : outputs) out->save(w);
+  w(e);
 }
 
-/// DSMC (time in equilibrium mean collision times).
-RunRecord simulate_dsmc(const RunOptions& o, bool progress, RunContext& ctx);
+/// The observers of `outputs` at the sampling stops and at the fine stops.
+std::vector<Observer*> samplers(const std::vector<std::unique_ptr<Output>>& outputs);
+std::vector<Observer*> fine_observers(const std::vector<std::unique_ptr<Output>>& outputs);
 
-/// EDMD (sigma = m = kT = 1). The first fifth of [0, until] equilibrates
-/// the lattice start without sampling; moments, VACF, Z and rates come from the rest.
-RunRecord simulate_edmd(const RunOptions& o, bool progress, RunContext& ctx);
+/// Calls finish() on every output, adding the wall time to st.analysis_s.
+void finish_outputs(const std::vector<std::unique_ptr<Output>>& outputs, DriverState& st);
 
-/// The value of `key` in `o` as text (doubles with 4 significant digits); "-" if absent.
-std::string summary_field(const analysis::JsonObject& o, const std::string& key);
-/// The value of `key` in `o` as a double (NaN if absent or not a number).
-double summary_number(const analysis::JsonObject& o, const std::string& key);
+/// Appends every output's summary keys to `summary`.
+void summarize_outputs(const std::vector<std::unique_ptr<Output>>& outputs,
+                       analysis::JsonObject& summary);
+
+namespace detail {
+/// The runs of dimension D, every engine of the registry (run_dim.hpp; compiled in the
+/// translation unit generated for D from run_dim.cpp.in).
+template <int D>
+RunRecord run_dim(const RunOptions& o, bool progress, RunContext& ctx);
+}  // namespace detail
 
 }  // namespace hypergas::cli

@@ -17,7 +17,7 @@
 #include "hypergas/studies/gnuplot.hpp"
 #include "hypergas/studies/replicas.hpp"
 #include "output_dir.hpp"
-#include "plot_scripts.hpp"
+#include "run_summary.hpp"
 
 namespace hypergas::cli {
 
@@ -33,9 +33,8 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume, bool quiet) {
   OutputDir out(o.out);
   const bool edmd = o.engine_kind() == registry::EngineKind::edmd;
   RunContext ctx;
-  // no checkpoint, not even at Ctrl-C, for --transport and --structure: their correlations
-  // and frames are not saved, so a resumed run would report a part of the run as the whole
-  if (o.replicas == 1 && !o.transport && !o.structure)
+  // no checkpoint, not even at Ctrl-C, for replicas or an output a checkpoint cannot hold
+  if (checkpointable(o))
     ctx.checkpoints = Checkpointer(out.dir(), o.checkpoint_every, o.checkpoint_wall_seconds());
   ctx.resume = resume;
   // gnuplot starts now, so that its start overlaps the run (its script follows the CSVs)
@@ -43,23 +42,8 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume, bool quiet) {
   RunRecord rec = simulate(o, !quiet, ctx);
   // CSV and plots first, so that summary.json can say how long they took (output_s).
   const auto t0 = std::chrono::steady_clock::now();
-  rec.moments.write_moments_csv(out.staged("moments.csv").string());
-  rec.moments.write_speed_histogram_csv(out.staged("speed_histogram.csv").string());
-  if (rec.vacf && rec.vacf->frames() >= 2) rec.vacf->write_csv(out.staged("vacf.csv").string());
-  if (rec.transport) {
-    rec.transport->write_transport_csv(out.staged("transport.csv").string());
-    rec.transport->write_correlations_csv(out.staged("correlations.csv").string());
-  }
-  if (rec.helfand) {
-    rec.helfand->write_transport_csv(out.staged("transport.csv").string());
-    rec.helfand->write_correlations_csv(out.staged("correlations.csv").string());
-  }
-  if (rec.structure) {
-    rec.structure->write_rdf_csv(out.staged("rdf.csv").string());
-    rec.structure->write_structure_factor_csv(out.staged("structure_factor.csv").string());
-  }
-  plot.finish(run_plot_script(rec.vacf && rec.vacf->frames() >= 2,
-                              rec.transport ? 1 : rec.helfand ? 2 : 0, bool(rec.structure)));
+  for (const auto& output : rec.outputs) output->write(out);
+  plot.finish(plot_script(rec.outputs));
   rec.summary.emplace_back(
       "output_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   const analysis::JsonObject& summary = rec.summary;
@@ -79,20 +63,9 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume, bool quiet) {
   fmt::print("  final kurtosis_x {} (MB 3), KS p-value of speeds {}, energy drift {}, "
              "momentum drift {}\n",
              f("kurtosis_x"), f("ks_p_speed"), f("energy_rel_drift"), f("momentum_drift"));
-  if (rec.transport)
-    for (const auto& c : rec.transport->finish())
-      fmt::print("  {} {:.5g} +- {:.2g} (reduced), first Sonine {:.5g}, ratio {:.5f} +- {:.5f}\n",
-                 c.name, c.value, c.error, c.sonine, c.ratio, c.ratio_error);
-  if (rec.helfand)
-    for (const auto& c : rec.helfand->finish())
-      fmt::print("  {} {:.5g} +- {:.2g}, over first Sonine {:.5f} +- {:.5f}, over Enskog "
-                 "{:.5f} +- {:.5f}\n",
-                 c.name, c.value, c.error, c.ratio, c.ratio_error, c.enskog_ratio,
-                 c.enskog_ratio_error);
-  if (rec.structure)
-    fmt::print("  g(sigma+) {:.5g} +- {:.2g} from the rdf (contact theorem from Z: {})\n",
-               rec.structure->finish().contact, rec.structure->finish().contact_error,
-               f("contact_value_from_Z"));
+  std::string lines;
+  for (const auto& output : rec.outputs) output->report(lines, summary);
+  fmt::print("{}", lines);
   if (edmd)
     fmt::print("  packing {}, Z = PV/NkT {}, collision rate {}, mean free time {}\n",
                f("packing"), f("Z"), f("collision_rate"), f("mean_free_time"));

@@ -46,6 +46,10 @@ struct RunPlan {
   /// DSMC: fine stops per sampling interval (evenly spaced; the first is the sampling
   /// instant): the grid of --transport. 1: the sampling instants only.
   std::uint64_t substeps = 1;
+  /// EDMD granular run: the restitution the engine gets after each sample (the first at
+  /// the end of the equilibration, which runs elastic): the cooling starts from the
+  /// equilibrium fluid. Unset: the engine's own.
+  std::optional<double> quench;
 
   /// Stop k, or nothing after the last one.
   std::optional<Stop> stop(std::uint64_t k) const;
@@ -123,6 +127,9 @@ void drive(Engine& engine, const RunPlan& plan, DriverState& st, Observer& obs,
     const auto t1 = Clock::now();
     if (s->fine && fine) engine.observe(*fine);
     if (s->sample) engine.observe(obs);
+    if constexpr (requires { engine.set_restitution(1.0); })
+      if (s->sample && plan.quench && engine.restitution() != *plan.quench)
+        engine.set_restitution(*plan.quench);
     const auto t2 = Clock::now();
     st.engine_s += std::chrono::duration<double>(t1 - t0).count();
     st.analysis_s += std::chrono::duration<double>(t2 - t1).count();

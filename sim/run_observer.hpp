@@ -32,4 +32,17 @@ class RunObserver final : public Observer {
   double analysis_s_ = 0.0;
 };
 
+/// Forwards snapshots to `targets` in order (the fine-grid observers of a run).
+class FanOut final : public Observer {
+ public:
+  explicit FanOut(std::vector<Observer*> targets) : targets_(std::move(targets)) {}
+  void observe(const Snapshot& s) override {
+    for (Observer* t : targets_) t->observe(s);
+  }
+  bool empty() const { return targets_.empty(); }
+
+ private:
+  std::vector<Observer*> targets_;
+};
+
 }  // namespace hypergas::cli

@@ -10,6 +10,7 @@
 
 #include "hypergas/analysis/output.hpp"
 #include "hypergas/error.hpp"
+#include "hypergas/vec.hpp"
 #include "integrals.hpp"
 
 namespace hypergas::analysis {
@@ -179,14 +180,7 @@ void StructureRecorder::observe(const Snapshot& s) {
         }
       }
     };
-    switch (d) {
-      case 1: scan.template operator()<1>(); break;
-      case 2: scan.template operator()<2>(); break;
-      case 3: scan.template operator()<3>(); break;
-      case 4: scan.template operator()<4>(); break;
-      case 5: scan.template operator()<5>(); break;
-      default: scan.template operator()<6>(); break;
-    }
+    for_dim(d, [&](auto dim) { scan.template operator()<decltype(dim)::value>(); });
   } else {
     std::size_t cells = 1;
     for (int a = 0; a < d; ++a) cells *= std::size_t(m);

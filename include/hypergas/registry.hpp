@@ -269,4 +269,14 @@ decltype(auto) dispatch(F&& f, Choice<List> first, Choice<Lists>... rest) {
   return detail::visit(first.index, bound, List{});
 }
 
+/// An engine chosen at run time: the axes with_engine turns into one engine type.
+struct EngineChoice {
+  EngineKind engine = EngineKind::dsmc;
+  int dim = 3;
+  std::string_view model = dsmc::HardSpheres::name;  ///< DSMC collision model
+  bool species = false;                               ///< two species (Features::species)
+  std::string_view scan = AutomaticScan::name;        ///< EDMD neighbour scan
+  double packing = 0.0;  ///< EDMD packing fraction: the regime of the automatic scan
+};
+
 }  // namespace hypergas::registry

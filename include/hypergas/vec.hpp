@@ -2,7 +2,13 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
+#include <cstddef>
+#include <string>
 #include <type_traits>
+#include <utility>
+
+#include "hypergas/error.hpp"
 
 namespace hypergas {
 
@@ -30,6 +36,24 @@ constexpr void for_each_dim(F&& f) {
     (f(DimTag<Ds + 1>{}), ...);
   }
   (std::make_integer_sequence<int, max_dim>{});
+}
+
+/// Calls `f(DimTag<D>{})` for the runtime dimension d (D = d) and returns what f returns
+/// (the same type for every D), through a table of function pointers: the one place where a
+/// runtime dimension becomes a template argument (registry::dispatch's dimension axis uses
+/// it too). Throws InvalidInput for d outside min_dim..max_dim.
+template <class F>
+decltype(auto) for_dim(int d, F&& f) {
+  if (d < min_dim || d > max_dim)
+    throw InvalidInput("dimension must be in " + std::to_string(min_dim) + ".." +
+                       std::to_string(max_dim) + ", got " + std::to_string(d));
+  using R = decltype(f(DimTag<min_dim>{}));
+  using Fn = R (*)(F&);
+  static constexpr auto table = []<int... Ds>(std::integer_sequence<int, Ds...>) {
+    return std::array<Fn, sizeof...(Ds)>{
+        [](F& g) -> R { return g(DimTag<Ds + min_dim>{}); }...};
+  }(std::make_integer_sequence<int, max_dim - min_dim + 1>{});
+  return table[static_cast<std::size_t>(d - min_dim)](f);
 }
 
 }  // namespace hypergas

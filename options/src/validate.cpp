@@ -280,6 +280,16 @@ edmd::Config edmd_config(const RunOptions& o) {
 
 bool two_species(const RunOptions& o) { return o.mass_ratio != 1.0; }
 
+registry::EngineChoice engine_choice(const RunOptions& o) {
+  registry::EngineChoice c;
+  c.engine = o.engine_kind();
+  c.dim = o.dim;
+  c.model = o.model;
+  c.species = two_species(o);
+  if (c.engine == registry::EngineKind::edmd) c.packing = edmd_config(o).packing;
+  return c;
+}
+
 dsmc::Drive drive_kind(std::string_view name) {
   if (name == "none") return dsmc::Drive::none;
   if (name == "white-noise") return dsmc::Drive::white_noise;

@@ -3,6 +3,7 @@
 #include "engine_handle.hpp"
 #include "hypergas/dsmc/config.hpp"
 #include "hypergas/registry.hpp"
+#include "hypergas/vec.hpp"
 
 namespace hypergas::python {
 
@@ -12,16 +13,14 @@ std::unique_ptr<DsmcHandle> make_dsmc(const options::RunOptions& o, const std::s
   cfg.scheme = registry::scheme(scheme);
   cfg.dt = dt;
   dsmc::validate(cfg);
-  return registry::dispatch(
-      [&](auto dim) { return detail::make_dsmc_dim<decltype(dim)::type::value>(o, cfg, given); },
-      registry::dimension(o.dim));
+  return for_dim(o.dim,
+                 [&](auto dim) { return detail::make_dsmc_dim<decltype(dim)::value>(o, cfg, given); });
 }
 
 std::unique_ptr<EdmdHandle> make_edmd(const options::RunOptions& o) {
   const edmd::Config cfg = options::edmd_config(o);
-  return registry::dispatch(
-      [&](auto dim) { return detail::make_edmd_dim<decltype(dim)::type::value>(o, cfg); },
-      registry::dimension(o.dim));
+  return for_dim(o.dim,
+                 [&](auto dim) { return detail::make_edmd_dim<decltype(dim)::value>(o, cfg); });
 }
 
 }  // namespace hypergas::python

@@ -14,7 +14,7 @@
 #include "hypergas/dsmc/engine.hpp"
 #include "hypergas/edmd/engine.hpp"
 #include "hypergas/engine_concept.hpp"
-#include "hypergas/registry.hpp"
+#include "hypergas/engines.hpp"
 
 namespace hypergas::python::detail {
 
@@ -61,9 +61,9 @@ class Common : public Base {
   Engine e_;
 };
 
-template <int D, class Model, bool Species>
-class Dsmc final : public Common<dsmc::Engine<D, Model, Features{.species = Species}>, DsmcHandle> {
-  using Engine = dsmc::Engine<D, Model, Features{.species = Species}>;
+template <class Engine>
+class Dsmc final : public Common<Engine, DsmcHandle> {
+  using Model = typename registry::EngineTraits<Engine>::Model;
   static_assert(SimulationEngine<Engine>);
   using Common<Engine, DsmcHandle>::e_;
 
@@ -94,11 +94,9 @@ class Dsmc final : public Common<dsmc::Engine<D, Model, Features{.species = Spec
   int threads_ = 1;
 };
 
-template <int D, bool Species, class Scan>
-class Edmd final
-    : public Common<edmd::Engine<D, Features{.positions = true, .species = Species}, Scan>,
-                    EdmdHandle> {
-  using Engine = edmd::Engine<D, Features{.positions = true, .species = Species}, Scan>;
+template <class Engine>
+class Edmd final : public Common<Engine, EdmdHandle> {
+  static constexpr int D = Engine::dim;
   static_assert(SimulationEngine<Engine>);
   using Common<Engine, EdmdHandle>::e_;
 
@@ -164,25 +162,30 @@ Store given_particles(const GivenVelocities& given, double mass_ratio) {
 template <int D>
 std::unique_ptr<DsmcHandle> make_dsmc_dim(const options::RunOptions& o, const dsmc::Config& cfg,
                                           const GivenVelocities* given) {
-  return registry::dispatch(
-      [&](auto model, auto species) -> std::unique_ptr<DsmcHandle> {
-        using Handle =
-            Dsmc<D, typename decltype(model)::type, decltype(species)::type::value>;
-        if (!given) return std::make_unique<Handle>(cfg);
-        using Store = Particles<D, Features{.species = decltype(species)::type::value}>;
-        return std::make_unique<Handle>(cfg, given_particles<Store>(*given, o.mass_ratio));
-      },
-      registry::model(o.model), registry::species(options::two_species(o)));
+  return registry::with_engine<D>(
+      options::engine_choice(o), [&](auto engine) -> std::unique_ptr<DsmcHandle> {
+        using Engine = typename decltype(engine)::type;
+        if constexpr (registry::is_dsmc<Engine>) {
+          if (!given) return std::make_unique<Dsmc<Engine>>(cfg);
+          using Store = Particles<D, registry::EngineTraits<Engine>::features>;
+          return std::make_unique<Dsmc<Engine>>(cfg,
+                                                given_particles<Store>(*given, o.mass_ratio));
+        } else {
+          throw InvalidInput("python: an EDMD choice reached the DSMC factory");
+        }
+      });
 }
 
 template <int D>
 std::unique_ptr<EdmdHandle> make_edmd_dim(const options::RunOptions& o, const edmd::Config& cfg) {
-  return registry::dispatch(
-      [&](auto species, auto dense) -> std::unique_ptr<EdmdHandle> {
-        using Scan = registry::RegimeScan<typename decltype(dense)::type, D>;
-        return std::make_unique<Edmd<D, decltype(species)::type::value, Scan>>(cfg);
-      },
-      registry::species(options::two_species(o)), registry::regime(D, cfg.packing));
+  return registry::with_engine<D>(
+      options::engine_choice(o), [&](auto engine) -> std::unique_ptr<EdmdHandle> {
+        using Engine = typename decltype(engine)::type;
+        if constexpr (!registry::is_dsmc<Engine>)
+          return std::make_unique<Edmd<Engine>>(cfg);
+        else
+          throw InvalidInput("python: a DSMC choice reached the EDMD factory");
+      });
 }
 
 }  // namespace hypergas::python::detail

@@ -98,12 +98,10 @@ EqRuns equilibrium_runs(std::size_t N, const std::vector<double>& Ts, int R, std
   return out;
 }
 
-/// Calls f(DimTag<D>{}) for D = lo..hi, through the registry's dispatch.
+/// Calls f(DimTag<D>{}) for D = lo..hi (for_dim, vec.hpp).
 template <class F>
 void for_dims(int lo, int hi, F&& f) {
-  for (int d = lo; d <= hi; ++d)
-    registry::dispatch([&](auto dim) { f(typename decltype(dim)::type{}); },
-                       registry::dimension(d));
+  for (int d = lo; d <= hi; ++d) for_dim(d, f);
 }
 
 constexpr int equilibrium_replicas = 32;

@@ -36,9 +36,8 @@ void eos_study(const ReportOptions& o, ReportResult& res) {
                                          : std::vector<double>{0.25, 1, 4, 16, 64};
   const int Re = 16;
   for (int d = 1; d <= 4; ++d)
-    registry::dispatch(
-        [&](auto dim) {
-          constexpr int D = decltype(dim)::type::value;
+    for_dim(d, [&](auto dim) {
+          constexpr int D = decltype(dim)::value;
           if constexpr (D <= 4) {
             const auto [eta, zref] = eos_reference(D);
             for (double T : Te) {
@@ -63,8 +62,7 @@ void eos_study(const ReportOptions& o, ReportResult& res) {
             }
             add_slope(res, "eos", "edmd", D, 4.0);  // statistical regime (report.hpp)
           }
-        },
-        registry::dimension(d));
+        });
 }
 
 }  // namespace hypergas::studies::detail

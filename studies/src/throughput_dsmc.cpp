@@ -10,7 +10,7 @@
 #include "hypergas/dsmc/engine.hpp"
 #include "hypergas/dsmc/huge_pages.hpp"
 #include "hypergas/particles.hpp"
-#include "hypergas/registry.hpp"
+#include "hypergas/engines.hpp"
 #include "hypergas/rng.hpp"
 #include "hypergas/studies/statistics.hpp"
 #include "hypergas/studies/throughput.hpp"
@@ -198,15 +198,19 @@ void bench_point(std::ostream& out, const DsmcBenchOptions& o, std::size_t n) {
 }  // namespace
 
 void run_dsmc_bench(std::ostream& out, const DsmcBenchOptions& o) {
-  const auto model = registry::model(o.model);
-  for (int d : o.dims) registry::dimension(d);  // all options checked before any output
+  registry::model(o.model);  // all options checked before any output
+  for (int d : o.dims) registry::dimension(d);
   for (std::size_t n : o.ns)
-    for (int d : o.dims)
-      registry::dispatch(
-          [&](auto dim, auto m) {
-            bench_point<decltype(dim)::type::value, typename decltype(m)::type>(out, o, n);
-          },
-          registry::dimension(d), model);
+    for (int d : o.dims) {
+      registry::EngineChoice c;
+      c.dim = d;
+      c.model = o.model;
+      registry::with_engine(c, [&](auto engine) {
+        using Engine = typename decltype(engine)::type;
+        if constexpr (registry::is_dsmc<Engine> && !registry::EngineTraits<Engine>::features.species)
+          bench_point<Engine::dim, typename registry::EngineTraits<Engine>::Model>(out, o, n);
+      });
+    }
 }
 
 }  // namespace hypergas::studies

@@ -12,7 +12,7 @@
 #include "hypergas/edmd/engine.hpp"
 #include "hypergas/edmd/observables.hpp"
 #include "hypergas/error.hpp"
-#include "hypergas/registry.hpp"
+#include "hypergas/engines.hpp"
 #include "hypergas/studies/statistics.hpp"
 #include "hypergas/studies/throughput.hpp"
 
@@ -94,17 +94,16 @@ double edmd_warmup(int dim, double packing) {
 }
 
 void run_edmd_bench(const EdmdCase& c, std::ostream& out) {
-  registry::dispatch(
-      [&](auto dim, auto scan, auto dense) {
-        constexpr int D = decltype(dim)::type::value;
-        using Chosen = typename decltype(scan)::type;
-        using Dense = typename decltype(dense)::type;
-        // "auto" follows the density regime; a named scan is the same in both.
-        if constexpr (std::is_same_v<Chosen, registry::AutomaticScan> || !Dense::value)
-          edmd_case<D, registry::ScanFor<Chosen, D, Dense>>(c, out);
-      },
-      registry::dimension(c.dim), registry::scan(c.scan),
-      registry::regime(c.dim, c.scan == "auto" ? c.packing : 0.0));
+  registry::EngineChoice choice;
+  choice.engine = registry::EngineKind::edmd;
+  choice.dim = c.dim;
+  choice.scan = c.scan;
+  choice.packing = c.packing;
+  registry::with_engine<registry::Scans>(choice, [&](auto engine) {
+    using Engine = typename decltype(engine)::type;
+    if constexpr (!registry::is_dsmc<Engine> && !registry::EngineTraits<Engine>::features.species)
+      edmd_case<Engine::dim, typename registry::EngineTraits<Engine>::Scan>(c, out);
+  });
 }
 
 std::vector<EdmdCase> default_edmd_cases() {

@@ -33,6 +33,7 @@
 #include "hypergas/error.hpp"
 #include "hypergas/rng.hpp"
 #include "hypergas/tally/exact_sum.hpp"
+#include "hypergas/vec.hpp"
 
 namespace hypergas::tally {
 
@@ -191,14 +192,7 @@ class Fluxes {
     return u2;
   }
   int terms(const double* v, double* t) const {
-    switch (dim_) {
-      case 1: fill<1>(v, t); break;
-      case 2: fill<2>(v, t); break;
-      case 3: fill<3>(v, t); break;
-      case 4: fill<4>(v, t); break;
-      case 5: fill<5>(v, t); break;
-      default: fill<6>(v, t); break;
-    }
+    for_dim(dim_, [&](auto dim) { fill<decltype(dim)::value>(v, t); });
     return components();
   }
   /// The general path: round(x) to nearest, ties to even (as `units`), into 128 bits.

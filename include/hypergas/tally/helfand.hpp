@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "hypergas/error.hpp"
+#include "hypergas/vec.hpp"
 
 namespace hypergas::tally {
 
@@ -185,14 +186,7 @@ class Helfand {
     t_ = t;
   }
   void integrate_runtime(double t) {
-    switch (dim_) {
-      case 1: integrate<1>(t); break;
-      case 2: integrate<2>(t); break;
-      case 3: integrate<3>(t); break;
-      case 4: integrate<4>(t); break;
-      case 5: integrate<5>(t); break;
-      default: integrate<6>(t); break;
-    }
+    for_dim(dim_, [&](auto dim) { integrate<decltype(dim)::value>(t); });
   }
   /// Adds tagged particle a's displacement since its last update, up to t, to the open
   /// interval (each tagged particle moves only at its own collisions and at the grid

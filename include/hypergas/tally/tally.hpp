@@ -136,15 +136,8 @@ class Tally {
   /// indices below layout().n_species when there are several; f = m / layout().m_mean by
   /// mass_fraction, with the species masses of the layout or each particle's inverse mass).
   void add_snapshot(const Snapshot& s, std::size_t begin, std::size_t end) {
-    switch (layout_.dim) {
-      case 1: return add_range<1>(s, begin, end);
-      case 2: return add_range<2>(s, begin, end);
-      case 3: return add_range<3>(s, begin, end);
-      case 4: return add_range<4>(s, begin, end);
-      case 5: return add_range<5>(s, begin, end);
-      case 6: return add_range<6>(s, begin, end);
-      default: return add_range<0>(s, begin, end);
-    }
+    if (layout_.dim < min_dim || layout_.dim > max_dim) return add_range<0>(s, begin, end);
+    for_dim(layout_.dim, [&](auto dim) { add_range<decltype(dim)::value>(s, begin, end); });
   }
 
   /// Turns the queued entries into sums and counts (readers call it).

@@ -78,6 +78,9 @@ dsmc::Config dsmc_config(const RunOptions& o);
 edmd::Config edmd_config(const RunOptions& o);
 /// Whether the run has two species (mass_ratio != 1): the engines' Features::species.
 bool two_species(const RunOptions& o);
+/// The engine valid options name, for registry::with_engine (hypergas/engines.hpp): engine,
+/// dimension, model, species and, for EDMD, the automatic scan at the run's packing.
+registry::EngineChoice engine_choice(const RunOptions& o);
 
 /// Largest packing fraction (exclusive) an EDMD run may ask for in D dimensions: the
 /// jamming density of edmd::jamming_packing (1, 0.82, 0.64, 0.46, 0.31, 0.20 for D = 1..6).

@@ -1,0 +1,53 @@
+// sim/engine_runs.cpp -- the one entry of the command's engine runs (engine_runs.hpp) and
+// the loops over a run's outputs.
+#include "engine_runs.hpp"
+
+#include <chrono>
+
+#include <fmt/core.h>
+
+#include "hypergas/vec.hpp"
+
+namespace hypergas::cli {
+
+RunRecord simulate(const RunOptions& o, bool progress, RunContext& ctx) {
+  if (o.engine_kind() == registry::EngineKind::dsmc && o.dim == 1 && !two_species(o))
+    fmt::print(stderr,
+               "hypergas: note: in D = 1 equal masses only swap velocities, so the gas never "
+               "relaxes; use --mass-ratio R (R != 1) for a two-mass gas\n");
+  return for_dim(o.dim, [&](auto dim) {
+    return detail::run_dim<decltype(dim)::value>(o, progress, ctx);
+  });
+}
+
+RunRecord simulate(const RunOptions& o, bool progress) {
+  RunContext none;
+  return simulate(o, progress, none);
+}
+
+std::vector<Observer*> samplers(const std::vector<std::unique_ptr<Output>>& outputs) {
+  std::vector<Observer*> v;
+  for (const auto& out : outputs)
+    if (Observer* s = out->sampler()) v.push_back(s);
+  return v;
+}
+
+std::vector<Observer*> fine_observers(const std::vector<std::unique_ptr<Output>>& outputs) {
+  std::vector<Observer*> v;
+  for (const auto& out : outputs)
+    if (Observer* s = out->fine()) v.push_back(s);
+  return v;
+}
+
+void finish_outputs(const std::vector<std::unique_ptr<Output>>& outputs, DriverState& st) {
+  const auto t0 = std::chrono::steady_clock::now();
+  for (const auto& out : outputs) out->finish();
+  st.analysis_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void summarize_outputs(const std::vector<std::unique_ptr<Output>>& outputs,
+                       analysis::JsonObject& summary) {
+  for (const auto& out : outputs) out->summarize(summary);
+}
+
+}  // namespace hypergas::cli

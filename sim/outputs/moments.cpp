@@ -1,0 +1,41 @@
+// sim/outputs/moments.cpp -- the moments output (moments.hpp).
+#include "moments.hpp"
+
+#include "../granular_summary.hpp"
+#include "../output_dir.hpp"
+#include "hypergas/dsmc/models.hpp"
+#include "plot_moments_gp.hpp"  // generated from scripts/run/moments.gp
+
+namespace hypergas::cli {
+
+MomentsOutput::MomentsOutput(const RunSetup& s)
+    : dim_(s.options.dim),
+      dsmc_(s.engine == registry::EngineKind::dsmc),
+      restitution_(s.options.restitution),
+      driven_(dsmc_ && options::drive_kind(s.options.drive) != dsmc::Drive::none),
+      hard_spheres_(!dsmc_ || s.options.model == dsmc::HardSpheres::name) {
+  if (dsmc_) recorder_.set_threads(s.options.threads);
+}
+
+void MomentsOutput::write(OutputDir& out) const {
+  recorder_.write_moments_csv(out.staged("moments.csv").string());
+  recorder_.write_speed_histogram_csv(out.staged("speed_histogram.csv").string());
+}
+
+void MomentsOutput::summarize(analysis::JsonObject& s) const {
+  for (const char* key : {"kurtosis_x", "m4_ratio", "l1_speed", "ks_p_speed", "chi2_p_speed"})
+    s.emplace_back(key, last(key));
+  if (restitution_ != 1.0)
+    add_granular_summary(s, recorder_, GranularRun{dim_, restitution_, driven_, hard_spheres_},
+                         dsmc_);
+}
+
+std::string_view MomentsOutput::plot() const { return embedded::plot_moments_gp; }
+
+namespace outputs {
+const OutputKind moments{
+    "moments", [](const RunOptions&, registry::EngineKind) { return true; },
+    make_output<MomentsOutput>};
+}
+
+}  // namespace hypergas::cli

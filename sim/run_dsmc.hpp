@@ -1,0 +1,117 @@
+// sim/run_dsmc.hpp -- the body of `hypergas run --engine dsmc` for one engine type (time in
+// equilibrium mean collision times), compiled in run_dim.cpp.in's translation units.
+#pragma once
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "engine_runs.hpp"
+#include "hypergas/conserved.hpp"
+#include "hypergas/engine_concept.hpp"
+#include "hypergas/studies/replicas.hpp"
+#include "hypergas/studies/statistics.hpp"
+#include "run_driver.hpp"
+#include "run_observer.hpp"
+#include "run_summary.hpp"
+
+namespace hypergas::cli::detail {
+
+/// Runs one system on o.threads threads (checkpoints and resume through ctx) or `replicas`
+/// independent replicas (studies/replicas.hpp: replica 0 keeps the seed, so its files equal
+/// those of a one-replica run; the replicas run side by side, one per thread, with
+/// --threads 1, else one after another, each on o.threads threads). The outputs are replica
+/// 0's; the other replicas keep their own moments only. The summary adds totals, the
+/// aggregate rate and the replica mean of the final kurtosis with its error.
+template <class Engine>
+RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
+  static_assert(SimulationEngine<Engine>);
+  using Clock = std::chrono::steady_clock;
+  const dsmc::Config cfg = dsmc_config(o);
+  const double until = o.until;
+  RunPlan plan{.sampling = o.schedule(0.0), .warmup_stops = 0, .substeps = 1, .quench = {}};
+  const double every = plan.sampling.every();
+  const int k = o.replicas;
+  const RunSetup setup{o, registry::EngineKind::dsmc, plan, 0.0};
+  RunRecord rec;
+  rec.outputs = make_outputs(setup);
+  std::vector<std::unique_ptr<MomentsOutput>> others(static_cast<std::size_t>(k));
+  for (int r = 1; r < k; ++r) others[r] = std::make_unique<MomentsOutput>(setup);
+  const auto moments = [&](int r) -> const MomentsOutput& {
+    return r == 0 ? rec.moments() : *others[r];
+  };
+
+  // per replica; under MPI (studies::ReplicaSpread) these reach rank 0 from every rank
+  std::vector<double> engine_s(k), rate(k), drift_e(k), drift_p(k), cpp(k), coll(k), kurt(k);
+  DriverState st0;
+  double engine_bpp = 0.0;
+  const auto t0 = Clock::now();
+  const auto body = [&](int r, Engine& engine, DriverState& st, const Conserved<Engine::dim>& c0,
+                        Checkpointer& ck) {
+    engine.set_threads(o.threads);
+    RunObserver obs(r == 0 ? samplers(rec.outputs) : std::vector<Observer*>{others[r]->sampler()},
+                    "dsmc", until, progress && r == 0);
+    FanOut fine(r == 0 ? fine_observers(rec.outputs) : std::vector<Observer*>{});
+    const auto save = [&](checkpoint::Writer& w) { save_run(w, o, st, c0, engine, rec.outputs); };
+    drive(engine, plan, st, obs, ck, save, fine.empty() ? nullptr : &fine);
+    const auto c1 = conserved(engine.particles());
+    engine_s[r] = st.engine_s;
+    coll[r] = static_cast<double>(engine.collisions());  // exact below 2^53
+    rate[r] = engine_s[r] > 0.0 ? coll[r] / engine_s[r] : 0.0;
+    drift_e[r] = energy_rel_drift(c0, c1);
+    drift_p[r] = momentum_drift(c0, c1);
+    cpp[r] = engine.collisions_per_particle();
+    kurt[r] = moments(r).last("kurtosis_x");
+    if (r == 0) engine_bpp = engine.bytes_per_particle();
+  };
+  if (k == 1) {
+    std::optional<Engine> engine;
+    Conserved<Engine::dim> c0;
+    body(0, start_engine(engine, cfg, ctx, st0, c0, rec.outputs), st0, c0, ctx.checkpoints);
+  } else {
+    studies::run_replicas<Engine>(
+        cfg, k, o.threads == 1 ? k : 1,
+        [&](int r, Engine& engine) {
+          DriverState st;
+          Checkpointer none;
+          body(r, engine, r == 0 ? st0 : st, conserved(engine.particles()), none);
+        },
+        {&engine_s, &rate, &drift_e, &drift_p, &cpp, &coll, &kurt});
+    // replica 0 ran on rank 0, which writes the files; the other ranks are done
+    if (!studies::replica_root()) return rec;
+  }
+  const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+  finish_outputs(rec.outputs, st0);
+
+  RunFacts f;
+  f.dim = Engine::dim;
+  f.model = o.model;
+  for (int r = 0; r < k; ++r) {
+    f.collisions += static_cast<std::int64_t>(coll[r]);
+    f.collisions_per_s += rate[r];
+  }
+  f.wall_s = wall;
+  // a granular gas loses its energy: no drift to report
+  f.energy_rel_drift = o.restitution != 1.0 ? std::numeric_limits<double>::quiet_NaN()
+                                            : *std::max_element(drift_e.begin(), drift_e.end());
+  f.momentum_drift = *std::max_element(drift_p.begin(), drift_p.end());
+  f.time = until;
+  f.every = every;
+  f.fraction = two_species(o) ? o.fraction : 0.0;
+  f.engine_bytes_per_particle = engine_bpp;
+  const auto [kurt_mean, kurt_se] = studies::mean_se(kurt);
+  rec.summary = run_summary(o, f,
+                            {{"replicas", std::int64_t{k}},
+                             {"threads", std::int64_t{o.threads}},
+                             {"collisions_per_particle", cpp[0]},
+                             {"kurtosis_x_replica_mean", kurt_mean},
+                             {"kurtosis_x_replica_se", kurt_se}},
+                            st0);
+  summarize_outputs(rec.outputs, rec.summary);
+  return rec;
+}
+
+}  // namespace hypergas::cli::detail

@@ -1,0 +1,105 @@
+// sim/run_edmd.hpp -- the body of `hypergas run --engine edmd` for one engine type (sigma =
+// m = kT = 1), compiled in run_dim.cpp.in's translation units. The first fifth of
+// [0, until] equilibrates the lattice start without sampling; the outputs, Z and the rates
+// come from the rest.
+#pragma once
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "engine_runs.hpp"
+#include "hypergas/conserved.hpp"
+#include "hypergas/edmd/observables.hpp"
+#include "hypergas/engine_concept.hpp"
+#include "hypergas/granular/theory.hpp"
+#include "run_driver.hpp"
+#include "run_observer.hpp"
+#include "run_summary.hpp"
+
+namespace hypergas::cli::detail {
+
+/// Fraction of [0, until] spent equilibrating the lattice start before sampling, and the
+/// stops (checkpoint opportunities) in it.
+inline constexpr double equilibration_fraction = 0.2;
+inline constexpr int equilibration_stops = 10;
+
+template <class Engine>
+RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
+  static_assert(SimulationEngine<Engine>);
+  constexpr int D = Engine::dim;
+  using Clock = std::chrono::steady_clock;
+  const edmd::Config cfg = edmd_config(o);
+  const double until = o.until;
+  const double t_eq = equilibration_fraction * until;
+  RunPlan plan{.sampling = o.schedule(t_eq), .warmup_stops = equilibration_stops, .substeps = 1,
+               .quench = {}};
+  const bool granular = o.restitution != 1.0;
+  // a granular run equilibrates elastically and is quenched at the end of the equilibration
+  if (granular) plan.quench = o.restitution;
+  const double every = plan.sampling.every();
+
+  const auto t0 = Clock::now();
+  RunRecord rec;
+  rec.outputs = make_outputs(RunSetup{o, registry::EngineKind::edmd, plan, t_eq});
+  DriverState st;
+  Conserved<D> c0;
+  std::optional<Engine> e;
+  edmd::Config elastic = cfg;
+  elastic.restitution = 1.0;  // the equilibration
+  Engine& engine = start_engine(e, elastic, ctx, st, c0, rec.outputs);
+  RunObserver obs(samplers(rec.outputs), "edmd", until, progress);
+  const auto save = [&](checkpoint::Writer& w) { save_run(w, o, st, c0, engine, rec.outputs); };
+  drive(engine, plan, st, obs, ctx.checkpoints, save);
+  const auto t2 = Clock::now();
+  const auto c1 = conserved(engine.particles());
+
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  const double Z = granular ? nan : engine.pressure_Z();  // no equilibrium pressure
+  finish_outputs(rec.outputs, st);
+  RunFacts f;
+  f.dim = D;
+  f.model = std::string(dsmc::HardSpheres::name);
+  f.collisions = static_cast<std::int64_t>(engine.collisions());
+  f.wall_s = std::chrono::duration<double>(t2 - t0).count();
+  f.collisions_per_s =
+      st.engine_s > 0.0 ? static_cast<double>(f.collisions) / st.engine_s : 0.0;
+  f.energy_rel_drift = granular ? nan : energy_rel_drift(c0, c1);
+  f.momentum_drift = momentum_drift(c0, c1);
+  f.time = engine.time();
+  f.every = every;
+  f.fraction = two_species(o) ? o.fraction : 0.0;
+  f.engine_bytes_per_particle = engine.bytes_per_particle();
+  analysis::JsonObject keys{
+      {"packing", engine.packing()},
+      {"scan", std::string(Engine::scan_name)},
+      {"Z", Z},
+      {"collision_rate", engine.collision_rate()},
+      {"mean_free_time", engine.mean_free_time()},
+      {"equilibration_time", t_eq},
+      {"kT", engine.temperature()},
+      {"contact_value_from_Z", granular ? nan : edmd::contact_value(D, Z, engine.packing())},
+  };
+  if (granular) {
+    // Haff's t0 of the Enskog gas at the initial temperature (sigma sqrt(m/kT0)), with the
+    // contact value of Henderson (2D) or Carnahan-Starling (3D)
+    double haff = nan;
+    if ((D == 2 || D == 3) && !two_species(o)) {
+      const double eta = engine.packing();
+      const double chi =
+          D == 2 ? granular::chi_henderson(eta) : granular::chi_carnahan_starling(eta);
+      const double a2 = granular::a2_hcs(o.restitution, D);
+      haff = granular::haff_t0(o.restitution, D, a2) /
+             granular::enskog_collision_frequency(D, eta, chi);
+    }
+    keys.emplace_back("haff_t0_enskog", haff);
+    keys.emplace_back("tc_elastic_collisions",
+                      static_cast<std::int64_t>(engine.tc_elastic_collisions()));
+  }
+  rec.summary = run_summary(o, f, keys, st);
+  summarize_outputs(rec.outputs, rec.summary);
+  return rec;
+}
+
+}  // namespace hypergas::cli::detail

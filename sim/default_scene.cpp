@@ -21,6 +21,7 @@
 #include "engine_runs.hpp"
 #include "hypergas/analysis/output.hpp"
 #include "hypergas/error.hpp"
+#include "hypergas/options/from_given.hpp"
 #include "hypergas/rng.hpp"
 #include "hypergas/vec.hpp"
 #include "hypergas/studies/gnuplot.hpp"
@@ -52,21 +53,23 @@ double first_crossing(const std::vector<double>& x, const std::vector<double>& y
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+/// The run of dimension d, validated as the command's (options::make): a scene that cannot
+/// build an invalid run.
 RunOptions scene_run(const SceneOptions& s, int d) {
-  RunOptions o = options::defaults(registry::EngineKind::dsmc);
-  o.dim = d;
-  o.model = dsmc::HardSpheres::name;
-  o.init = registry::name(InitialState::delta);
-  o.n = s.n;
-  o.seed = Rng(s.seed).split(static_cast<std::uint64_t>(d))();
-  o.until = d == 1 ? 3.0 * s.until : s.until;  // the two-mass 1D gas relaxes more slowly
-  o.every = o.until / 80.0;
-  if (d == 1) {
-    o.mass_ratio = mass_ratio_1d;
-    o.fraction = 0.5;
-    o.n -= o.n % 4;  // delta shell in 1D: an even number of particles per species
-  }
-  return o;
+  return options::make(registry::EngineKind::dsmc, [&](RunOptions& o) {
+    o.dim = d;
+    o.model = dsmc::HardSpheres::name;
+    o.init = registry::name(InitialState::delta);
+    o.n = s.n;
+    o.seed = Rng(s.seed).split(static_cast<std::uint64_t>(d))();
+    o.until = d == 1 ? 3.0 * s.until : s.until;  // the two-mass 1D gas relaxes more slowly
+    o.every = o.until / 80.0;
+    if (d == 1) {
+      o.mass_ratio = mass_ratio_1d;
+      o.fraction = 0.5;
+      o.n -= o.n % 4;  // delta shell in 1D: an even number of particles per species
+    }
+  });
 }
 
 void validate(const SceneOptions& s) {

@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include "hypergas/error.hpp"
+#include "hypergas/options/from_given.hpp"
 
 namespace hypergas::cli {
 
@@ -96,19 +97,7 @@ void add_run_options(CLI::App& app, RunArgs& a) {
                          other_edmd, other_dsmc));
 }
 
-RunOptions run_options(const RunArgs& a) {
-  registry::EngineKind engine = options::default_engine;
-  for (const auto& [opt, text] : a.given)
-    if (opt->name == "engine") {
-      RunOptions probe;
-      options::set_text(probe, *opt, text);  // checks the name
-      engine = probe.engine_kind();
-    }
-  RunOptions o = options::defaults(engine);
-  for (const auto& [opt, text] : a.given) options::set_text(o, *opt, text);
-  options::validate(o);
-  return o;
-}
+RunOptions run_options(const RunArgs& a) { return options::from_given(a.given); }
 
 void add_bench_options(CLI::App& app, BenchOptions& o) {
   app.add_option("--engine", o.engine,

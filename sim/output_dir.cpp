@@ -5,9 +5,6 @@
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
-#include <cerrno>
-#include <fcntl.h>
-#include <sys/file.h>
 #include <unistd.h>
 
 #include <fmt/core.h>
@@ -28,51 +25,43 @@ void remove_stale_staging(const fs::path& dir) {
       fs::remove_all(e.path(), ec);
 }
 
+std::string not_writable(const fs::path& dir, const std::string& why) {
+  return fmt::format("output folder '{}' is not writable: {}", dir.string(), why);
+}
+
 [[noreturn]] void unwritable(const fs::path& dir, const std::string& why) {
-  throw InvalidInput(fmt::format("output folder '{}' is not writable: {}", dir.string(), why));
+  throw InvalidInput(not_writable(dir, why));
+}
+
+/// The output folder's words for LockedDir's failures.
+std::string words(LockedDir::Failure f, const fs::path& dir, const fs::path& missing,
+                  const std::string& why) {
+  switch (f) {
+    case LockedDir::Failure::cannot_create:
+      return not_writable(dir, fmt::format("cannot create '{}' ({})", missing.string(), why));
+    case LockedDir::Failure::not_a_folder:
+      return not_writable(dir, "it exists and is not a folder");
+    case LockedDir::Failure::busy:
+      return fmt::format("output folder '{}' is in use by another hypergas process",
+                         dir.string());
+    default:
+      return not_writable(dir, "it cannot be opened");
+  }
 }
 }  // namespace
 
 OutputDir::OutputDir(fs::path dir) : dir_(std::move(dir)) {
   if (dir_.empty()) throw InvalidInput("output folder name is empty");
-  std::error_code ec;
-  // Find the missing ancestors so that exactly those can be removed on failure.
-  std::vector<fs::path> missing;
-  for (fs::path p = fs::absolute(dir_, ec); !p.empty(); p = p.parent_path()) {
-    if (fs::exists(fs::symlink_status(p, ec)) || p == p.parent_path()) break;
-    missing.push_back(p);
-  }
-  std::reverse(missing.begin(), missing.end());
-  for (const fs::path& p : missing) {
-    if (!fs::create_directory(p, ec) || ec) {
-      remove_created();
-      unwritable(dir_, fmt::format("cannot create '{}' ({})", p.string(),
-                                   ec ? ec.message() : "exists"));
-    }
-    created_.push_back(p);
-  }
-  if (!fs::is_directory(dir_, ec)) unwritable(dir_, "it exists and is not a folder");
   // One process per output folder: a second run or resume on the same folder would write
-  // the same checkpoint and files. The lock is on the folder itself (no file to leave
-  // behind) and the kernel drops it when the process ends, however it ends.
-  dir_fd_ = ::open(dir_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (dir_fd_ < 0 || ::flock(dir_fd_, LOCK_EX | LOCK_NB) != 0) {
-    const bool busy = dir_fd_ >= 0 && errno == EWOULDBLOCK;
-    if (dir_fd_ >= 0) ::close(dir_fd_);
-    dir_fd_ = -1;
-    remove_created();
-    if (busy)
-      throw InvalidInput(fmt::format("output folder '{}' is in use by another hypergas process",
-                                     dir_.string()));
-    unwritable(dir_, "it cannot be opened");
-  }
+  // the same checkpoint and files.
+  folder_.open(dir_, words);
   remove_stale_staging(dir_);
   staging_ = dir_ / fmt::format(".hypergas-staging-{}", ::getpid());
+  std::error_code ec;
   if (!fs::create_directory(staging_, ec) || ec || ::access(staging_.c_str(), W_OK) != 0) {
-    ::close(dir_fd_);
-    dir_fd_ = -1;
+    folder_.unlock();
     fs::remove_all(staging_, ec);
-    remove_created();
+    folder_.remove_created();
     unwritable(dir_, ec ? ec.message() : "permission denied");
   }
 }
@@ -80,15 +69,8 @@ OutputDir::OutputDir(fs::path dir) : dir_(std::move(dir)) {
 OutputDir::~OutputDir() {
   std::error_code ec;
   fs::remove_all(staging_, ec);
-  if (dir_fd_ >= 0) ::close(dir_fd_);
-  if (!done_) remove_created();
-}
-
-void OutputDir::remove_created() {
-  // Innermost first, and only if still empty (never a user's file).
-  std::error_code ec;
-  for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, ec);
-  created_.clear();
+  folder_.unlock();
+  if (!done_) folder_.remove_created();
 }
 
 fs::path OutputDir::staged(std::string_view name) { return staging_ / fs::path(name); }

@@ -11,13 +11,15 @@
 #include <string_view>
 #include <vector>
 
+#include "locked_dir.hpp"
+
 namespace hypergas::cli {
 
 class OutputDir {
  public:
   /// Creates `dir` (and missing parents), checks that files can be created in it and makes
   /// the staging folder (removing those left by killed runs). Holds a lock on the folder
-  /// while it lives. Throws InvalidInput naming the folder and the reason
+  /// while it lives (locked_dir.hpp). Throws InvalidInput naming the folder and the reason
   /// otherwise, also when another hypergas process holds the folder.
   explicit OutputDir(std::filesystem::path dir);
   OutputDir(const OutputDir&) = delete;
@@ -39,15 +41,11 @@ class OutputDir {
   const std::vector<std::string>& committed() const { return committed_; }
 
  private:
-  /// Removes the folders the constructor created (innermost first, only if empty).
-  void remove_created();
-
   std::filesystem::path dir_;
   std::filesystem::path staging_;
-  std::vector<std::filesystem::path> created_;  // folders we made, outermost first
   std::vector<std::string> committed_;
   bool done_ = false;
-  int dir_fd_ = -1;  // flock held on dir_ itself: one process per output folder
+  LockedDir folder_;  // the folders we made and the flock on dir_ itself
 };
 
 }  // namespace hypergas::cli

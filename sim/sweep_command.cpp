@@ -17,15 +17,12 @@
 #include <fstream>
 #include <sstream>
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
 #include <fmt/core.h>
 
 #include "commands.hpp"
 #include "hypergas/analysis/output.hpp"
 #include "hypergas/error.hpp"
+#include "locked_dir.hpp"
 #include "progress.hpp"
 #include "run_driver.hpp"
 #include "sweep/plan.hpp"
@@ -86,30 +83,8 @@ class SweepDir {
             "sweep folder '{}' is not empty and holds no plan.toml: give a new or empty folder",
             dir.string()));
       }
-    } else {
-      std::vector<fs::path> missing;
-      for (fs::path p = fs::absolute(dir, ec); !p.empty(); p = p.parent_path()) {
-        if (fs::exists(fs::symlink_status(p, ec)) || p == p.parent_path()) break;
-        missing.push_back(p);
-      }
-      for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
-        if (!fs::create_directory(*it, ec) || ec) {
-          remove_created();
-          throw InvalidInput(fmt::format("sweep folder '{}' cannot be created: {} ({})",
-                                         dir.string(), it->string(),
-                                         ec ? ec.message() : "exists"));
-        }
-        created_.push_back(*it);
-      }
     }
-    fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (fd_ < 0 || ::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-      const bool busy = fd_ >= 0 && errno == EWOULDBLOCK;
-      remove_created();
-      throw InvalidInput(busy ? fmt::format("sweep folder '{}' is in use by another hypergas "
-                                            "sweep", dir.string())
-                              : fmt::format("sweep folder '{}' cannot be opened", dir.string()));
-    }
+    folder_.open(dir, words);
     if (fresh_) {
       const fs::path tmp = dir / ".plan.toml.tmp";
       std::ofstream f(tmp, std::ios::binary);
@@ -117,28 +92,33 @@ class SweepDir {
       f.close();
       if (!f || (fs::rename(tmp, stored, ec), ec)) {
         fs::remove(tmp, ec);
-        remove_created();
+        folder_.unlock();
+        folder_.remove_created();
         throw InvalidInput(fmt::format("sweep folder '{}' is not writable", dir.string()));
       }
     }
-  }
-  ~SweepDir() {
-    if (fd_ >= 0) ::close(fd_);
   }
   SweepDir(const SweepDir&) = delete;
   SweepDir& operator=(const SweepDir&) = delete;
 
  private:
-  void remove_created() {
-    if (fd_ >= 0) ::close(fd_);
-    fd_ = -1;
-    std::error_code ec;
-    for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, ec);
-    created_.clear();
+  /// The sweep folder's words for LockedDir's failures.
+  static std::string words(LockedDir::Failure f, const fs::path& dir, const fs::path& missing,
+                           const std::string& why) {
+    switch (f) {
+      case LockedDir::Failure::cannot_create:
+        return fmt::format("sweep folder '{}' cannot be created: {} ({})", dir.string(),
+                           missing.string(), why);
+      case LockedDir::Failure::not_a_folder:
+        return fmt::format("sweep folder '{}' exists and is not a folder", dir.string());
+      case LockedDir::Failure::busy:
+        return fmt::format("sweep folder '{}' is in use by another hypergas sweep", dir.string());
+      default:
+        return fmt::format("sweep folder '{}' cannot be opened", dir.string());
+    }
   }
   fs::path dir_;
-  std::vector<fs::path> created_;
-  int fd_ = -1;
+  LockedDir folder_;  // created if missing (and removed again if the sweep cannot start)
   bool fresh_ = true;
 };
 

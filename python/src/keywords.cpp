@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "convert.hpp"
+#include "hypergas/options/from_given.hpp"
 #include "hypergas/schedule.hpp"
 
 namespace hypergas::python {
@@ -53,16 +54,15 @@ std::vector<std::string> engine_keywords(registry::EngineKind kind, bool given_v
 
 options::RunOptions run_options(registry::EngineKind kind, const py::kwargs& kw,
                                 const std::vector<std::string>& allowed) {
-  options::RunOptions o = options::defaults(kind);
-  for (const auto& [key, value] : kw) {
-    const std::string k = py::str(key);
-    if (std::find(allowed.begin(), allowed.end(), k) == allowed.end())
-      type_error("unexpected keyword argument '" + k + "'");
-    if (value.is_none()) continue;  // not given: the default
-    set_value(o, *options::find(k), value);
-  }
-  options::validate(o);
-  return o;
+  return options::make(kind, [&](options::RunOptions& o) {
+    for (const auto& [key, value] : kw) {
+      const std::string k = py::str(key);
+      if (std::find(allowed.begin(), allowed.end(), k) == allowed.end())
+        type_error("unexpected keyword argument '" + k + "'");
+      if (value.is_none()) continue;  // not given: the default
+      set_value(o, *options::find(k), value);
+    }
+  });
 }
 
 void bind_options(py::module_& m) {

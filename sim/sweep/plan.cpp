@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "hypergas/error.hpp"
+#include "hypergas/options/from_given.hpp"
 #include "hypergas/studies/replicas.hpp"
 
 namespace hypergas::cli::sweep {
@@ -275,26 +276,18 @@ std::vector<Case> make_cases(const Plan& plan, const std::filesystem::path& dir)
                                values[j]);
       if (plan.replicas > 1) c.label += fmt::format("{}replica={}", c.label.empty() ? "" : " ", r);
       try {
-        // As `hypergas run` builds its options: the engine's defaults, then each option.
-        std::vector<std::pair<const options::Option*, std::string>> args = plan.fixed;
+        // As `hypergas run` builds its options: the engine's defaults, then each option;
+        // then the replica's seed, the default checkpoint and the case's folder.
+        options::Given args = plan.fixed;
         for (std::size_t j = 0; j < values.size(); ++j)
           args.emplace_back(plan.swept[j].option, values[j]);
-        registry::EngineKind engine = options::default_engine;
-        for (const auto& [opt, text] : args)
-          if (opt->name == "engine") {
-            options::RunOptions probe;
-            options::set_text(probe, *opt, text);
-            engine = probe.engine_kind();
-          }
-        options::RunOptions o = options::defaults(engine);
-        for (const auto& [opt, text] : args) options::set_text(o, *opt, text);
-        if (r > 0) o.seed = studies::replica_seed(o.seed, r);
-        if (r > 0 && !o.was_given("--seed")) o.given.push_back("--seed");
-        if (!checkpoints_given && o.replicas == 1 && !o.transport && !o.structure)
-          options::set_text(o, *options::find("checkpoint-wall"), "60s");
-        options::set_text(o, *options::find("out"), (dir / "cases" / c.id).string());
-        options::validate(o);
-        c.options = std::move(o);
+        c.options = options::from_given(args, [&](options::RunOptions& o) {
+          if (r > 0) o.seed = studies::replica_seed(o.seed, r);
+          if (r > 0 && !o.was_given("--seed")) o.given.push_back("--seed");
+          if (!checkpoints_given && o.replicas == 1 && !o.transport && !o.structure)
+            options::set_text(o, *options::find("checkpoint-wall"), "60s");
+          options::set_text(o, *options::find("out"), (dir / "cases" / c.id).string());
+        });
       } catch (const InvalidInput& e) {
         bad(fmt::format("case {} ({}): {}", c.id, c.label.empty() ? "the only case" : c.label,
                         e.what()));

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -65,7 +66,8 @@ class Scratch {
   fs::path path_;
 };
 
-/// How a Child starts: which program, and whether in a session of its own.
+/// How a Child starts: which program, whether in a session or process group of its own,
+/// with which environment, and where its output is captured.
 struct Spawn {
   /// The program to run with the arguments (argv[0]); by default the `hypergas` command.
   std::string program = HYPERGAS_CLI_PATH;
@@ -74,30 +76,44 @@ struct Spawn {
   /// child's pid, so that Child::kill_session() reaches all of them. An MPI launcher moves
   /// each rank into a process group of its own (Open MPI does), but not out of the session.
   bool own_session = false;
+  /// setpgid() in the child and the parent: a process group of its own whose id is the
+  /// child's pid, so that Child::kill_group() reaches what the program starts.
+  bool own_group = false;
+  /// The environment ("NAME=value" each) instead of this process's.
+  std::optional<std::vector<std::string>> env = std::nullopt;
+  /// The folder of the files that capture stdout and stderr, instead of the child's `cwd`.
+  fs::path io = {};
 };
 
 /// A running `hypergas args...` (or `how.program args...`) in folder `cwd`, stdin /dev/null
 /// (so stderr is not a terminal: no progress bar), stdout and stderr captured in files of
-/// `cwd`. The tests send it a signal only once a readiness signal holds (wait_until), never
-/// after a guessed time. A child still running at destruction is killed (SIGKILL, with its
-/// whole session if it has one of its own) and reaped.
+/// `cwd` (or `how.io`). The tests send it a signal only once a readiness signal holds
+/// (wait_until), never after a guessed time. A child still running at destruction is killed
+/// (SIGKILL, with its whole session or process group if it has one of its own) and reaped.
+/// pid() is negative if fork failed.
 class Child {
  public:
   Child(const std::vector<std::string>& args, const fs::path& cwd, const Spawn& how = {})
-      : own_session_(how.own_session) {
+      : own_session_(how.own_session), own_group_(how.own_group) {
     static int counter = 0;
     const std::string tag = std::to_string(::getpid()) + "-" + std::to_string(counter++);
-    out_ = cwd / (".stdout-" + tag + ".txt");
-    err_ = cwd / (".stderr-" + tag + ".txt");
+    const fs::path& io = how.io.empty() ? cwd : how.io;
+    out_ = io / (".stdout-" + tag + ".txt");
+    err_ = io / (".stderr-" + tag + ".txt");
     std::vector<std::string> argv_s{how.program};
     argv_s.insert(argv_s.end(), args.begin(), args.end());
     std::vector<char*> argv;
     for (auto& a : argv_s) argv.push_back(a.data());
     argv.push_back(nullptr);
+    std::vector<std::string> env_s = how.env.value_or(std::vector<std::string>{});
+    std::vector<char*> envp;
+    for (auto& e : env_s) envp.push_back(e.data());
+    envp.push_back(nullptr);
     const std::string cwd_s = cwd.string(), out_s = out_.string(), err_s = err_.string();
     pid_ = ::fork();
     if (pid_ == 0) {
       if (how.own_session && ::setsid() < 0) ::_exit(126);
+      if (how.own_group) ::setpgid(0, 0);
       const int fo = ::open(out_s.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       const int fe = ::open(err_s.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       const int fi = ::open("/dev/null", O_RDONLY);
@@ -105,15 +121,18 @@ class Child {
       ::dup2(fi, 0);
       ::dup2(fo, 1);
       ::dup2(fe, 2);
-      ::execv(argv[0], argv.data());
+      if (how.env) ::execve(argv[0], argv.data(), envp.data());
+      else ::execv(argv[0], argv.data());
       ::_exit(127);
     }
+    if (how.own_group && pid_ > 0) ::setpgid(pid_, pid_);
   }
   Child(const Child&) = delete;
   Child& operator=(const Child&) = delete;
   ~Child() {
     if (own_session_ && pid_ > 0) kill_session(SIGKILL);
     if (pid_ > 0 && !reaped_) {
+      if (own_group_) ::kill(-pid_, SIGKILL);
       ::kill(pid_, SIGKILL);
       ::waitpid(pid_, &status_, 0);
     }
@@ -159,6 +178,12 @@ class Child {
 
   void signal(int sig) {
     if (running()) ::kill(pid_, sig);
+  }
+
+  /// For a child started with Spawn::own_group: sends `sig` to its process group (the
+  /// command and what it started), also after the command itself has ended.
+  void kill_group(int sig) {
+    if (own_group_ && pid_ > 0) ::kill(-pid_, sig);
   }
 
   /// For a child started with Spawn::own_session: sends `sig` to its process group and to
@@ -212,6 +237,7 @@ class Child {
  private:
   pid_t pid_ = -1;
   bool own_session_ = false;
+  bool own_group_ = false;
   int status_ = 0;
   bool reaped_ = false;
   fs::path out_, err_;

@@ -146,57 +146,34 @@ std::vector<std::string> child_env(bool gnuplot) {
 /// Runs `hypergas args...` in `cwd` (stdin /dev/null, stdout and stderr captured in files in
 /// `io`), in its own process group, killed with it after `timeout_s`. With `kill_when`, the
 /// group is killed as soon as that path exists (used to take a checkpoint from a running run).
+/// The process is the CLI tests' cli_test::Child (tests/cli/run_cli.hpp).
 Outcome exec(const Args& args, const fs::path& cwd, const fs::path& io, bool gnuplot,
              double timeout_s, const fs::path& kill_when = {}) {
-  const fs::path out = io / "stdout.txt", err = io / "stderr.txt";
-  std::vector<std::string> argv_s{HYPERGAS_CLI_PATH};
-  argv_s.insert(argv_s.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : argv_s) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  std::vector<std::string> env_s = child_env(gnuplot);
-  std::vector<char*> envp;
-  for (auto& e : env_s) envp.push_back(e.data());
-  envp.push_back(nullptr);
-  const std::string cwd_s = cwd.string(), out_s = out.string(), err_s = err.string();
-
+  cli_test::Spawn how;
+  how.own_group = true;
+  how.env = child_env(gnuplot);
+  how.io = io;
   const auto t0 = std::chrono::steady_clock::now();
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    ::setpgid(0, 0);
-    const int fo = ::open(out_s.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int fe = ::open(err_s.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int fi = ::open("/dev/null", O_RDONLY);
-    if (fo < 0 || fe < 0 || fi < 0 || ::chdir(cwd_s.c_str()) != 0) ::_exit(126);
-    ::dup2(fi, 0);
-    ::dup2(fo, 1);
-    ::dup2(fe, 2);
-    ::execve(argv[0], argv.data(), envp.data());
-    ::_exit(127);
-  }
+  cli_test::Child child(args, cwd, how);
+  const pid_t pid = child.pid();
   Outcome r;
   if (pid < 0) {
     r.err = std::string("fork failed: ") + std::strerror(errno);
     return r;
   }
-  ::setpgid(pid, pid);
   // Wait on a pidfd where the kernel has them (woken at the exit), else poll.
   int pidfd = -1;
 #ifdef SYS_pidfd_open
   pidfd = static_cast<int>(::syscall(SYS_pidfd_open, pid, 0));
 #endif
-  int status = 0;
   auto pause = std::chrono::microseconds(50);
-  for (;;) {
-    const pid_t w = ::waitpid(pid, &status, WNOHANG);
-    if (w == pid) break;
+  while (child.running()) {
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const bool stop = t > timeout_s || (!kill_when.empty() && fs::exists(kill_when));
     if (stop) {
       r.timed_out = t > timeout_s;
-      ::kill(-pid, SIGKILL);
-      ::kill(pid, SIGKILL);
-      ::waitpid(pid, &status, 0);
+      child.kill_group(SIGKILL);
+      child.signal(SIGKILL);
       break;
     }
     if (pidfd >= 0 && kill_when.empty()) {
@@ -208,11 +185,12 @@ Outcome exec(const Args& args, const fs::path& cwd, const fs::path& io, bool gnu
     }
   }
   if (pidfd >= 0) ::close(pidfd);
-  ::kill(-pid, SIGKILL);  // anything the command started and left running
+  const cli_test::Result done = child.wait();
+  child.kill_group(SIGKILL);  // anything the command started and left running
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  r.out = cli_test::slurp(out);
-  r.err = cli_test::slurp(err);
+  r.code = done.code;
+  r.out = done.out;
+  r.err = done.err;
   return r;
 }
 

@@ -1,5 +1,6 @@
 // hypergas/edmd/engine.hpp -- event-driven molecular dynamics of hard spheres in D dims:
-// the event loop (step, collide, cross, reorder, run_until; snapshots in snapshot.hpp).
+// the event loop (step, run_until; the kernel of one event, collide, cross and reorder in
+// engine_events.hpp; snapshots in snapshot.hpp).
 //
 //   edmd::Config cfg;  cfg.n = 32000; cfg.packing = 0.26; cfg.seed = 7;
 //   edmd::Engine<3> e(cfg);              // lattice start (+ LS compression if needed)
@@ -196,42 +197,9 @@ class Engine {
       step_event<Record>();
   }
 
+  /// Processes the earliest event (engine_events.hpp).
   template <bool Record>
-  void step_event() {
-    if (s_.ncoll >= next_reorder_) reorder();
-    const std::uint32_t i = q_.top();
-    look_ahead();
-    s_.now = q_.top_time();
-    Ev& e = s_.ev[i];
-    if (e.t_pair <= e.t_cross) {
-      const std::int32_t j = e.partner;
-      if (!e.valid(s_.cnt)) {
-        ++s_.nstale;
-        if (e.valid2(s_.cnt)) {
-          // The runner-up of i's last scan is still valid: every pair with a particle that
-          // has not changed course since that scan is at least that late, and a pair with
-          // one that has was scanned by it (see the file comment). No rescan needed.
-          e.t_pair = e.t_pair2, e.partner = e.partner2, e.pcount = e.pcount2;
-          e.t_pair2 = never, e.partner2 = -1;
-          q_.update(i, std::min(e.t_pair, e.t_cross));
-          return;
-        }
-        s_.advance(i);
-        predict(i);
-        return;
-      }
-      if constexpr (lists) scanner_.prefetch_lists(i, static_cast<std::uint32_t>(j));
-      collide<Record>(i, static_cast<std::uint32_t>(j));
-      if constexpr (lists) scanner_.prefetch_records(s_, i, static_cast<std::uint32_t>(j));
-      predict(i);
-      predict(static_cast<std::uint32_t>(j));
-      if (debug_) check_overlaps();
-    } else {
-      ++s_.ncross;
-      cross(i);
-      if (debug_) check_overlaps();
-    }
-  }
+  void step_event();
 
  public:
 
@@ -370,18 +338,7 @@ class Engine {
 
   /// Brings every particle into the box, rebuilds the cells for the current diameters and
   /// predicts every event.
-  void rebuild() {
-    const std::size_t n = size();
-    for (std::uint32_t i = 0; i < n; ++i) s_.wrap(i);
-    s_.build_cells(Scanner::cells_per_particle, shell());
-    scanner_.rebuilt(s_);
-    std::vector<double> keys(n);
-    for (std::uint32_t i = 0; i < n; ++i) {
-      scan(i, -1, 0, Top2{});
-      keys[i] = std::min(s_.ev[i].t_pair, s_.ev[i].t_cross);
-    }
-    q_.build(keys);
-  }
+  void rebuild();
 
   /// Predicts i's pair events and crossing: the one-cell box by scan_small_box, else by the
   /// scan policy (all neighbour cells, or the slab `dir` along `axis` after a crossing for
@@ -399,22 +356,7 @@ class Engine {
   /// they come: the calendar entries three buckets ahead, the event records two ahead, and
   /// one ahead the particle records (and lists) of the particle and its partner, whose
   /// event record was asked for one event earlier. Changes nothing but timing.
-  void look_ahead() {
-    q_.prefetch(q_.ahead(3));
-    const std::int32_t b = q_.ahead(2);
-    if (b >= 0) __builtin_prefetch(&s_.ev[static_cast<std::uint32_t>(b)]);
-    const std::int32_t c = q_.ahead(1);
-    if (c >= 0) {
-      const Ev& e = s_.ev[static_cast<std::uint32_t>(c)];
-      __builtin_prefetch(s_.p.position(static_cast<std::uint32_t>(c)).data());
-      if (e.partner >= 0 && e.t_pair <= e.t_cross) {
-        __builtin_prefetch(s_.p.position(static_cast<std::uint32_t>(e.partner)).data());
-        __builtin_prefetch(&s_.cnt[static_cast<std::uint32_t>(e.partner)]);
-        if constexpr (lists) scanner_.prefetch_lists(static_cast<std::uint32_t>(c),
-                                                     static_cast<std::uint32_t>(e.partner));
-      }
-    }
-  }
+  void look_ahead();
 
   /// Full prediction for i (advanced to now) and queue update.
   void predict(std::uint32_t i) {
@@ -422,38 +364,10 @@ class Engine {
     q_.update(i, std::min(s_.ev[i].t_pair, s_.ev[i].t_cross));
   }
 
+  /// Collides i and j (at now): advances both, updates the velocities, the virial, the
+  /// tally (Record) and the collision counters.
   template <bool Record>
-  void collide(std::uint32_t i, std::uint32_t j) {
-    State<D, F>& s = s_;
-    s.advance(i);
-    s.advance(j);
-    Vec<D> r = s.p.position(i) - s.p.position(j);
-    for (int k = 0; k < D; ++k) r[k] -= s.L * std::round(r[k] / s.L);  // contact: |r_k| <= L/2
-    const double rn = r.norm();
-    const Vec<D> n = r / rn;
-    const double wi = s.p.inv_mass(i), wj = s.p.inv_mass(j);
-    const Vec<D> vi0 = s.p.velocity(i);
-    [[maybe_unused]] const Vec<D> vj0 = s.p.velocity(j);
-    if (alpha_ < 1.0) [[unlikely]] {
-      collide_granular(i, j, wi, wj, n);
-    } else {
-      detail::collide_unchecked<D>(s.p.velocity(i), s.p.velocity(j), wi, wj, n);
-    }
-    if (s.rate != 0.0) {  // LS: separate at least as fast as the contact distance grows
-      const double a = 2.0 * s.base_contact(i, j) * s.rate;
-      s.p.velocity(i) += (a * wi / (wi + wj)) * n;
-      s.p.velocity(j) -= (a * wj / (wi + wj)) * n;
-    }
-    win_.virial += (s.p.velocity(i) - vi0).dot(r) / wi;
-    if constexpr (Record) {
-      const Vec<D> vi1 = s.p.velocity(i), vj1 = s.p.velocity(j);
-      contacts_.helfand->template collision<D>(s.now, s.id[i], s.id[j], vi0.data(), vj0.data(),
-                                               vi1.data(), vj1.data(), r.data());
-    }
-    ++s.cnt[i];
-    ++s.cnt[j];
-    ++s.ncoll;
-  }
+  void collide(std::uint32_t i, std::uint32_t j);
 
   /// The velocity update of a granular collision of i and j (at now, unit normal n from j
   /// to i): inelastic with alpha_, or elastic by the TC rule if either particle collided
@@ -471,47 +385,8 @@ class Engine {
     keep_receding<D>(s.p.velocity(i), s.p.velocity(j), wi, wj, n);
   }
 
-  void cross(std::uint32_t i) {
-    State<D, F>& s = s_;
-    if constexpr (lists) {
-      if (s.cells.per_side() > 1) {  // i left the sphere around its list's anchor
-        s.wrap(i);
-        scanner_.relist(s, i);
-        predict(i);
-        return;
-      }
-    }
-    s.advance(i);
-    const int k = s.ev[i].cross / 2;
-    const int dir = (s.ev[i].cross & 1) ? 1 : -1;
-    auto c = s.cells.coords(s.cells.cell_of(i));
-    const int m = s.cells.per_side();
-    const double w = s.cells.width();
-    auto x = s.p.position(i);
-    c[k] += dir;
-    if (c[k] == m) {
-      c[k] = 0, x[k] = 0.0, ++s.image[i * D + k];
-    } else if (c[k] < 0) {
-      c[k] = m - 1, x[k] = s.L, --s.image[i * D + k];
-    } else {
-      x[k] = (dir > 0 ? c[k] : c[k] + 1) * w;
-    }
-    const std::uint32_t left = s.cells.cell_of(i);
-    s.cells.remove(i);
-    s.cells.insert(i, s.cells.index(c));
-    scanner_.left_cell(s, left);  // FilteredScan: the new cell's box follows i's scan below
-    Ev& e = s.ev[i];
-    // SlabScan keeps the still-valid pair events and scans only the newly adjacent slab
-    const bool keep = Scanner::keeps_pairs_on_crossing && m >= 3 && e.valid(s.cnt);
-    if (keep) {
-      Top2 top{e.t_pair - s.now, e.t_pair2 - s.now, e.partner, e.partner2};
-      if (top.p2 >= 0 && s.cnt[top.p2] != e.pcount2) top.t2 = never, top.p2 = -1;
-      scan(i, k, dir, top);
-    } else {
-      scan(i, -1, 0, Top2{});
-    }
-    q_.update(i, std::min(e.t_pair, e.t_cross));
-  }
+  /// Moves i into the next cell along its crossing (or renews its list) and predicts again.
+  void cross(std::uint32_t i);
 
   /// Renumbers the particles in Z-order of their cells, so that a scan's neighbours lie
   /// near each other in memory (at N = 256000 the state is larger than the caches, and a
@@ -519,35 +394,7 @@ class Engine {
   /// every per-particle array: no particle is advanced and no event re-predicted, so the
   /// trajectories are unchanged bit for bit. Snapshots and error messages report the
   /// original numbering (State::id).
-  void reorder() {
-    State<D, F>& s = s_;
-    const std::uint32_t n = static_cast<std::uint32_t>(size());
-    next_reorder_ = s.ncoll + reorder_every_;
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> key(n);
-    for (std::uint32_t i = 0; i < n; ++i) key[i] = {s.cells.morton(s.cells.cell_of(i)), i};
-    std::sort(key.begin(), key.end());
-    std::vector<std::uint32_t> from(n), to(n), cell(n);
-    for (std::uint32_t i = 0; i < n; ++i) from[i] = key[i].second, to[key[i].second] = i;
-    s.p.permute(from);
-    permute_records(s.image, from, D);
-    permute_records(s.cnt, from, 1);
-    permute_records(s.ev, from, 1);
-    permute_records(s.id, from, 1);
-    if (!s.t_last.empty()) permute_records(s.t_last, from, 1);
-    scanner_.permute(from);
-    for (std::uint32_t i = 0; i < n; ++i) {
-      Ev& e = s.ev[i];
-      if (e.partner >= 0) e.partner = static_cast<std::int32_t>(to[e.partner]);
-      if (e.partner2 >= 0) e.partner2 = static_cast<std::int32_t>(to[e.partner2]);
-      cell[i] = s.cells.cell_of(from[i]);
-      s.slot[s.id[i]] = i;
-    }
-    s.cells.clear();
-    for (std::uint32_t i = n; i-- > 0;) s.cells.insert(i, cell[i]);  // lists in slot order
-    std::vector<double> keys(n);
-    for (std::uint32_t i = 0; i < n; ++i) keys[i] = std::min(s.ev[i].t_pair, s.ev[i].t_cross);
-    q_.build(keys);
-  }
+  void reorder();
 
   void refuse_tally_if_granular() const {
     if (alpha_ < 1.0)
@@ -573,3 +420,5 @@ class Engine {
 };
 
 }  // namespace hypergas::edmd
+
+#include "hypergas/edmd/engine_events.hpp"  // the event kernel's member definitions

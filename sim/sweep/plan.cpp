@@ -12,6 +12,7 @@
 #include "hypergas/error.hpp"
 #include "hypergas/options/from_given.hpp"
 #include "hypergas/studies/replicas.hpp"
+#include "../outputs/output.hpp"
 
 namespace hypergas::cli::sweep {
 
@@ -284,7 +285,7 @@ std::vector<Case> make_cases(const Plan& plan, const std::filesystem::path& dir)
         c.options = options::from_given(args, [&](options::RunOptions& o) {
           if (r > 0) o.seed = studies::replica_seed(o.seed, r);
           if (r > 0 && !o.was_given("--seed")) o.given.push_back("--seed");
-          if (!checkpoints_given && o.replicas == 1 && !o.transport && !o.structure)
+          if (!checkpoints_given && checkpointable(o))
             options::set_text(o, *options::find("checkpoint-wall"), "60s");
           options::set_text(o, *options::find("out"), (dir / "cases" / c.id).string());
         });

@@ -15,13 +15,13 @@
 
 #include "engine_runs.hpp"
 #include "granular_summary.hpp"
+#include "hypergas/analysis/estimates.hpp"
 #include "hypergas/analysis/moments_recorder.hpp"
 #include "hypergas/conserved.hpp"
 #include "hypergas/dsmc/engine.hpp"
 #include "hypergas/engine_concept.hpp"
 #include "hypergas/registry.hpp"
 #include "hypergas/studies/replicas.hpp"
-#include "hypergas/studies/statistics.hpp"
 #include "run_driver.hpp"
 #include "run_observer.hpp"
 
@@ -126,7 +126,9 @@ RunRecord run_dsmc(const RunOptions& o, const dsmc::Config& cfg, bool progress,
     total += static_cast<std::int64_t>(coll[r]);
     total_rate += rate[r];
   }
-  const auto [kurt_mean, kurt_se] = studies::mean_se(kurt);
+  // one replica has no standard error (NaN, analysis/estimates.hpp); its summary says 0
+  const auto [kurt_mean, kurt_se_k] = analysis::mean_se(kurt);
+  const double kurt_se = k == 1 ? 0.0 : kurt_se_k;
   const auto last = [&](const char* col) { return rec.moments.column(col).back(); };
   rec.summary = analysis::JsonObject{
       {"dim", std::int64_t{D}},

@@ -8,6 +8,7 @@
 #include <memory>
 #include <sstream>
 
+#include "hypergas/analysis/estimates.hpp"
 #include "hypergas/analysis/output.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/tally/tally.hpp"
@@ -17,7 +18,6 @@ namespace hypergas::analysis {
 
 using detail::cut_value;
 using detail::log_slope;
-using detail::mean_se;
 using detail::running_integral;
 using detail::tail_rate;
 
@@ -158,7 +158,7 @@ const std::vector<TransportCoefficient>& TransportRecorder::finish() {
     r.name = names[g];
     const auto [value, tail] = cut_value(c, I, cut, dt, rate_tail);
     r.value = value;
-    r.error = mean_se(vals).second;
+    r.error = mean_se(vals).se;
     r.sonine = ref[std::size_t(g)];
     r.ratio = r.value / r.sonine;
     r.ratio_error = r.error / r.sonine;
@@ -166,7 +166,7 @@ const std::vector<TransportCoefficient>& TransportRecorder::finish() {
     r.t_cut = static_cast<double>(cut) * dt;
     r.tail = tail;
     r.rate = log_slope(c, dt, 0, fit_last);
-    r.rate_error = mean_se(rates).second;
+    r.rate_error = mean_se(rates).se;
     r.sonine_rate = c0_mb[g] / r.sonine;
     r.stretches = vals;
     r.enskog = r.sonine, r.enskog_ratio = r.ratio, r.enskog_ratio_error = r.ratio_error;
@@ -197,7 +197,7 @@ const std::vector<TransportCoefficient>& TransportRecorder::finish() {
     TransportCoefficient r;
     r.name = names[3];
     r.value = slope(cd);
-    r.error = mean_se(vals).second;
+    r.error = mean_se(vals).se;
     r.sonine = ref[2];
     r.ratio = r.value / r.sonine;
     r.ratio_error = r.error / r.sonine;

@@ -279,7 +279,7 @@ class Engine {
     return p;
   }
   /// The factor (1 + alpha)/2 of the collisions' impulse (State::impulse: derived, not saved).
-  static double impulse_of(const Config& cfg) { return 0.5 * (1.0 + cfg.restitution); }
+  static double impulse_of(const Config& cfg) { return restitution_impulse(cfg.restitution); }
   static Model make_model(const Config& cfg) {
     if constexpr (std::is_same_v<Model, VariableHardSpheres>)
       return Model(cfg.vhs_exponent);

@@ -48,8 +48,10 @@ inline std::unique_ptr<analysis::TransportRecorder> transport_recorder(const Run
   ts.tagged = o.tagged;
   ts.warmup = options::transport_warmup;
   ts.seed = o.seed;
-  return std::make_unique<analysis::TransportRecorder>(ts, D, static_cast<std::size_t>(o.n),
-                                                       frames, o.model, o.vhs_exponent);
+  const registry::ModelTraits m = registry::model_traits(o.model, o.vhs_exponent);
+  return std::make_unique<analysis::TransportRecorder>(
+      ts, D, static_cast<std::size_t>(o.n), frames,
+      analysis::CollisionLaw{m.exponent, m.isotropic_scattering});
 }
 
 /// Runs one system on o.threads threads (checkpoints and resume through ctx) or `replicas`

@@ -47,32 +47,31 @@ std::vector<int> series_groups(const TransportSettings& s, int dim, std::size_t 
 
 }  // namespace
 
-std::vector<double> first_sonine(const std::string& model, double a, int d) {
+std::vector<double> first_sonine(const CollisionLaw& law, int d) {
   if (d < 2) throw InvalidInput("transport: no first Sonine value in D = 1");
-  const double D = d;
+  const double D = d, a = law.exponent;
   double eta = 0.0, ds = 0.0;
-  if (model == "hs") {
-    eta = (D + 2.0) / 4.0;
-    ds = D / 2.0;
-  } else if (model == "maxwell" || model == "vhs") {
-    if (model == "maxwell") a = 0.0;
+  if (law.isotropic_scattering) {
     eta = 2.0 * D * (D + 2.0) / ((D + a) * (D + a + 2.0));
     ds = 2.0 * D / (D + a);
+  } else if (a == 1.0) {  // hard spheres
+    eta = (D + 2.0) / 4.0;
+    ds = D / 2.0;
   } else {
-    throw InvalidInput("transport: no first Sonine values for model " + model);
+    throw InvalidInput("transport: no first Sonine values for hard-sphere scattering with "
+                       "rate exponent " + std::to_string(a));
   }
   return {eta, D * (D + 2.0) / (2.0 * (D - 1.0)) * eta, ds};
 }
 
 TransportRecorder::TransportRecorder(const TransportSettings& s, int dim, std::size_t n,
-                                     std::uint64_t frames, std::string model, double exponent)
+                                     std::uint64_t frames, CollisionLaw law)
     : set_(s),
       dim_(dim),
       n_(n),
-      model_(std::move(model)),
-      exponent_(exponent),
+      law_(law),
       corr_(series_groups(s, dim, n), detail::lag_count(s.max_lag, s.dt), frames, s.error_blocks) {
-  first_sonine(model_, exponent_, dim_);  // checks the model
+  first_sonine(law_, dim_);  // checks the law
   const auto t = static_cast<std::size_t>(std::min<std::size_t>(std::size_t(set_.tagged), n_));
   for (std::size_t k = 0; k < t; ++k) tagged_.push_back(k * n_ / t);
   frame_.resize(std::size_t(corr_.series()));
@@ -136,7 +135,7 @@ const std::vector<TransportCoefficient>& TransportRecorder::finish() {
     throw InvalidInput("transport: " + std::to_string(corr_.frames()) +
                        " samples, fewer than the " + std::to_string(corr_.lags()) +
                        " lags of one correlation window: run longer");
-  const std::vector<double> ref = first_sonine(model_, exponent_, dim_);
+  const std::vector<double> ref = first_sonine(law_, dim_);
   const double dt = set_.dt;
   const double c0_mb[n_groups] = {1.0, (dim_ + 2.0) / 2.0, 1.0};
   const int J = corr_.stretches();

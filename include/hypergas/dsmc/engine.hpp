@@ -262,7 +262,7 @@ class Engine {
     s_.c = dsmc::rate_constant(s_.p, s_.model.exponent());
     s_.kT0 = equilibrium_temperature(s_.p);
     s_.impulse = impulse_of(cfg);
-    if (cfg.drive != Drive::none && !std::is_same_v<Model, HardSpheres>)
+    if (cfg.drive != Drive::none && !Model::supports_drive)
       throw InvalidInput("DSMC: the white-noise drive is defined for hard spheres (--model hs)");
     if (cfg.drive != Drive::none && D < 2)
       throw InvalidInput("DSMC: the white-noise drive needs D >= 2 (its strength comes from the "

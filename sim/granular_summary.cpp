@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "hypergas/analysis/estimates.hpp"
 #include "hypergas/analysis/fit.hpp"
 #include "hypergas/analysis/histogram.hpp"
 #include "hypergas/analysis/maxwell.hpp"
 #include "hypergas/granular/theory.hpp"
-#include "hypergas/studies/statistics.hpp"
 
 namespace hypergas::cli {
 
@@ -23,11 +23,8 @@ constexpr std::size_t blocks = 8;
 
 /// Mean and standard error over `blocks` consecutive blocks of rows [b, e) of f(block b, e).
 template <class F>
-studies::MeanSe over_blocks(std::size_t b, std::size_t e, F f) {
-  std::vector<double> v;
-  const std::size_t len = (e - b) / blocks;
-  for (std::size_t k = 0; k < blocks; ++k) v.push_back(f(b + k * len, b + (k + 1) * len));
-  return studies::mean_se(v);
+analysis::MeanSe over_blocks(std::size_t b, std::size_t e, F f) {
+  return analysis::over_blocks(b, e, blocks, f);
 }
 
 /// Slope A of ln(f / c^(D-1)) = b - A c over the bins of the last speed histogram with
@@ -67,14 +64,10 @@ void add_granular_summary(analysis::JsonObject& summary, const analysis::Moments
   const bool enough = n >= 2 * blocks && d >= 2;
   const std::size_t b = n / 2;
   const auto mean_of = [&](const std::vector<double>& y) {
-    return over_blocks(b, n, [&](std::size_t i, std::size_t e) {
-      double s = 0.0;
-      for (std::size_t j = i; j < e; ++j) s += y[j];
-      return s / static_cast<double>(e - i);
-    });
+    return analysis::block_average(y, b, n, blocks);
   };
-  const studies::MeanSe a2m = enough ? mean_of(a2) : studies::MeanSe{nan, nan};
-  const studies::MeanSe a3m = enough ? mean_of(a3) : studies::MeanSe{nan, nan};
+  const analysis::MeanSe a2m = enough ? mean_of(a2) : analysis::MeanSe{nan, nan};
+  const analysis::MeanSe a3m = enough ? mean_of(a3) : analysis::MeanSe{nan, nan};
   put("a2_mean", a2m.mean);
   put("a2_error", a2m.se);
   put("a3_mean", a3m.mean);
@@ -85,11 +78,11 @@ void add_granular_summary(analysis::JsonObject& summary, const analysis::Moments
   put("a2_sonine", a2s);
   std::vector<double> lnT;
   for (const double x : T) lnT.push_back(std::log(x));
-  const studies::MeanSe cool =
+  const analysis::MeanSe cool =
       enough && !run.driven ? over_blocks(b, n, [&](std::size_t i, std::size_t e) {
         return -analysis::line_slope(cpp, lnT, i, e);
       })
-                            : studies::MeanSe{nan, nan};
+                            : analysis::MeanSe{nan, nan};
   put("cooling_per_collision", cool.mean);
   put("cooling_per_collision_error", cool.se);
   put("cooling_per_collision_sonine",
@@ -102,21 +95,19 @@ void add_granular_summary(analysis::JsonObject& summary, const analysis::Moments
   if (!run.driven) {
     std::vector<double> inv;
     for (const double x : T) inv.push_back(1.0 / std::sqrt(x));
-    const studies::MeanSe haff =
+    const analysis::MeanSe haff =
         enough ? over_blocks(b, n, [&](std::size_t i, std::size_t e) {
           return 1.0 / (std::sqrt(T.front()) * analysis::line_slope(t, inv, i, e));
         })
-               : studies::MeanSe{nan, nan};
+               : analysis::MeanSe{nan, nan};
     put("haff_t0", haff.mean);
     put("haff_t0_error", haff.se);
     put("haff_t0_sonine", dsmc_time_unit && run.hard_spheres && d >= 2
                               ? 2.0 / granular::cooling_rate(alpha, d, a2s)
                               : nan);
   } else {
-    const studies::MeanSe r = over_blocks(b, n, [&](std::size_t i, std::size_t e) {
-      double s = 0.0;
-      for (std::size_t j = i; j < e; ++j) s += T[j];
-      return s / static_cast<double>(e - i) / T.front();
+    const analysis::MeanSe r = over_blocks(b, n, [&](std::size_t i, std::size_t e) {
+      return analysis::range_mean(T, i, e) / T.front();
     });
     put("temperature_ratio_mean", enough ? r.mean : nan);
     put("temperature_ratio_error", enough ? r.se : nan);

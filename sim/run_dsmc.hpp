@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "engine_runs.hpp"
+#include "hypergas/analysis/estimates.hpp"
 #include "hypergas/conserved.hpp"
 #include "hypergas/engine_concept.hpp"
 #include "hypergas/studies/replicas.hpp"
-#include "hypergas/studies/statistics.hpp"
 #include "run_driver.hpp"
 #include "run_observer.hpp"
 #include "run_summary.hpp"
@@ -102,7 +102,9 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
   f.every = every;
   f.fraction = two_species(o) ? o.fraction : 0.0;
   f.engine_bytes_per_particle = engine_bpp;
-  const auto [kurt_mean, kurt_se] = studies::mean_se(kurt);
+  // one replica has no standard error (NaN, analysis/estimates.hpp); its summary says 0
+  const auto [kurt_mean, kurt_se_k] = analysis::mean_se(kurt);
+  const double kurt_se = k == 1 ? 0.0 : kurt_se_k;
   rec.summary = run_summary(o, f,
                             {{"replicas", std::int64_t{k}},
                              {"threads", std::int64_t{o.threads}},

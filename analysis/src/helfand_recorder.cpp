@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "hypergas/analysis/enskog.hpp"
+#include "hypergas/analysis/estimates.hpp"
 #include "hypergas/analysis/output.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/tally/helfand.hpp"
@@ -17,7 +18,6 @@ namespace hypergas::analysis {
 namespace {
 
 using detail::increment_value;
-using detail::mean_se;
 using detail::running_integral;
 
 // correlator groups
@@ -193,7 +193,7 @@ const std::vector<TransportCoefficient>& HelfandRecorder::finish() {
     TransportCoefficient r;
     r.name = name;
     r.value = value;
-    r.error = mean_se(st).second;
+    r.error = mean_se(st).se;
     r.sonine = sonine;
     r.ratio = value / sonine;
     r.ratio_error = r.error / sonine;

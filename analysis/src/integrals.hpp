@@ -1,6 +1,7 @@
 // Integrals of sampled correlation functions shared by the Green-Kubo recorders
 // (transport_recorder.cpp, helfand_recorder.cpp): trapezoid sums, the automatic cut, the
-// exponential tail, and the mean with its standard error over error stretches.
+// exponential tail (the mean with its standard error over error stretches is
+// estimates.hpp's mean_se).
 #pragma once
 
 #include <cmath>
@@ -80,18 +81,6 @@ inline std::pair<double, double> increment_value(const std::vector<double>& c, s
   const double q = std::exp(-g * dt);
   const double tail = g > 0.0 ? dt * c[k] * q / (1.0 - q) : 0.0;
   return {dt * sum + tail, tail};
-}
-
-/// Mean and its standard error (NaN for fewer than two values).
-inline std::pair<double, double> mean_se(const std::vector<double>& x) {
-  const double n = static_cast<double>(x.size());
-  if (x.size() < 2) return {x.empty() ? 0.0 : x[0], std::numeric_limits<double>::quiet_NaN()};
-  double m = 0;
-  for (double v : x) m += v;
-  m /= n;
-  double s2 = 0;
-  for (double v : x) s2 += (v - m) * (v - m);
-  return {m, std::sqrt(s2 / (n - 1) / n)};
 }
 
 }  // namespace hypergas::analysis::detail

@@ -8,6 +8,7 @@
 #include <random>
 #include <set>
 
+#include "hypergas/analysis/estimates.hpp"
 #include "hypergas/analysis/output.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/vec.hpp"
@@ -329,7 +330,7 @@ const StructureResult& StructureRecorder::finish() {
   const auto mean_err = [&](const std::vector<std::vector<double>>& per, std::size_t k) {
     std::vector<double> v;
     for (const auto& p : per) v.push_back(p[k]);
-    return detail::mean_se(v);
+    return mean_se(v);
   };
   const std::size_t core = static_cast<std::size_t>(std::lround(1.0 / set_.dr));
   std::vector<double> rbar(bins_);
@@ -352,7 +353,7 @@ const StructureResult& StructureRecorder::finish() {
   std::vector<double> cj;
   for (const auto& g : g_j) cj.push_back(contact(g));
   R.contact = contact(R.g);
-  R.contact_error = detail::mean_se(cj).second;
+  R.contact_error = mean_se(cj).se;
   const double k1 = 2.0 * std::numbers::pi / L_;
   for (std::size_t sh = 0; sh < kvec_.size(); ++sh) {
     const std::size_t nv = kvec_[sh].size() / std::size_t(d);

@@ -8,6 +8,7 @@
 #include <memory>
 #include <sstream>
 
+#include "hypergas/analysis/estimates.hpp"
 #include "hypergas/analysis/output.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/tally/tally.hpp"
@@ -17,7 +18,6 @@ namespace hypergas::analysis {
 
 using detail::cut_value;
 using detail::log_slope;
-using detail::mean_se;
 using detail::running_integral;
 using detail::tail_rate;
 
@@ -47,32 +47,31 @@ std::vector<int> series_groups(const TransportSettings& s, int dim, std::size_t 
 
 }  // namespace
 
-std::vector<double> first_sonine(const std::string& model, double a, int d) {
+std::vector<double> first_sonine(const CollisionLaw& law, int d) {
   if (d < 2) throw InvalidInput("transport: no first Sonine value in D = 1");
-  const double D = d;
+  const double D = d, a = law.exponent;
   double eta = 0.0, ds = 0.0;
-  if (model == "hs") {
-    eta = (D + 2.0) / 4.0;
-    ds = D / 2.0;
-  } else if (model == "maxwell" || model == "vhs") {
-    if (model == "maxwell") a = 0.0;
+  if (law.isotropic_scattering) {
     eta = 2.0 * D * (D + 2.0) / ((D + a) * (D + a + 2.0));
     ds = 2.0 * D / (D + a);
+  } else if (a == 1.0) {  // hard spheres
+    eta = (D + 2.0) / 4.0;
+    ds = D / 2.0;
   } else {
-    throw InvalidInput("transport: no first Sonine values for model " + model);
+    throw InvalidInput("transport: no first Sonine values for hard-sphere scattering with "
+                       "rate exponent " + std::to_string(a));
   }
   return {eta, D * (D + 2.0) / (2.0 * (D - 1.0)) * eta, ds};
 }
 
 TransportRecorder::TransportRecorder(const TransportSettings& s, int dim, std::size_t n,
-                                     std::uint64_t frames, std::string model, double exponent)
+                                     std::uint64_t frames, CollisionLaw law)
     : set_(s),
       dim_(dim),
       n_(n),
-      model_(std::move(model)),
-      exponent_(exponent),
+      law_(law),
       corr_(series_groups(s, dim, n), detail::lag_count(s.max_lag, s.dt), frames, s.error_blocks) {
-  first_sonine(model_, exponent_, dim_);  // checks the model
+  first_sonine(law_, dim_);  // checks the law
   const auto t = static_cast<std::size_t>(std::min<std::size_t>(std::size_t(set_.tagged), n_));
   for (std::size_t k = 0; k < t; ++k) tagged_.push_back(k * n_ / t);
   frame_.resize(std::size_t(corr_.series()));
@@ -136,7 +135,7 @@ const std::vector<TransportCoefficient>& TransportRecorder::finish() {
     throw InvalidInput("transport: " + std::to_string(corr_.frames()) +
                        " samples, fewer than the " + std::to_string(corr_.lags()) +
                        " lags of one correlation window: run longer");
-  const std::vector<double> ref = first_sonine(model_, exponent_, dim_);
+  const std::vector<double> ref = first_sonine(law_, dim_);
   const double dt = set_.dt;
   const double c0_mb[n_groups] = {1.0, (dim_ + 2.0) / 2.0, 1.0};
   const int J = corr_.stretches();
@@ -158,7 +157,7 @@ const std::vector<TransportCoefficient>& TransportRecorder::finish() {
     r.name = names[g];
     const auto [value, tail] = cut_value(c, I, cut, dt, rate_tail);
     r.value = value;
-    r.error = mean_se(vals).second;
+    r.error = mean_se(vals).se;
     r.sonine = ref[std::size_t(g)];
     r.ratio = r.value / r.sonine;
     r.ratio_error = r.error / r.sonine;
@@ -166,7 +165,7 @@ const std::vector<TransportCoefficient>& TransportRecorder::finish() {
     r.t_cut = static_cast<double>(cut) * dt;
     r.tail = tail;
     r.rate = log_slope(c, dt, 0, fit_last);
-    r.rate_error = mean_se(rates).second;
+    r.rate_error = mean_se(rates).se;
     r.sonine_rate = c0_mb[g] / r.sonine;
     r.stretches = vals;
     r.enskog = r.sonine, r.enskog_ratio = r.ratio, r.enskog_ratio_error = r.ratio_error;
@@ -197,7 +196,7 @@ const std::vector<TransportCoefficient>& TransportRecorder::finish() {
     TransportCoefficient r;
     r.name = names[3];
     r.value = slope(cd);
-    r.error = mean_se(vals).second;
+    r.error = mean_se(vals).se;
     r.sonine = ref[2];
     r.ratio = r.value / r.sonine;
     r.ratio_error = r.error / r.sonine;

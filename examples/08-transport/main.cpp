@@ -46,7 +46,8 @@ std::vector<analysis::TransportCoefficient> measure(double until, std::uint64_t 
   // samples from t = warmup on (the error stretches are cut from this count); run_until
   // takes at most 1e6 samples a call, so the run goes in stretches of 1000
   const auto frames = static_cast<std::uint64_t>(std::llround((until - ts.warmup) / ts.dt)) + 1;
-  analysis::TransportRecorder rec(ts, D, cfg.n, frames, "hs", 1.0);
+  using HS = dsmc::HardSpheres;  // the hard-sphere collision law, from the model type
+  analysis::TransportRecorder rec(ts, D, cfg.n, frames, {HS::exponent(), HS::isotropic_scattering});
   for (double t = 0.0; t < until;) {
     t = std::min(until, t + 1000.0);
     gas.run_until(t, &rec, ts.dt);

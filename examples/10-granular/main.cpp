@@ -49,6 +49,7 @@
 
 #include <fmt/core.h>
 
+#include "hypergas/analysis/estimates.hpp"
 #include "hypergas/analysis/fit.hpp"
 #include "hypergas/analysis/moments_recorder.hpp"
 #include "hypergas/analysis/output.hpp"
@@ -63,19 +64,8 @@ namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-struct MeanSe {
-  double mean = nan, se = nan;
-};
-
-MeanSe mean_se(const std::vector<double>& v) {
-  const double k = static_cast<double>(v.size());
-  double s = 0.0;
-  for (const double x : v) s += x;
-  const double m = s / k;
-  double q = 0.0;
-  for (const double x : v) q += (x - m) * (x - m);
-  return {m, std::sqrt(q / (k - 1.0) / k)};
-}
+using analysis::MeanSe;
+using analysis::mean_se;
 
 /// The blocks of the errors: 8 consecutive stretches of the second half of a run.
 constexpr int blocks = 8;
@@ -139,11 +129,8 @@ MeanSe hcs_a2(double alpha, std::size_t n, double until, int replicas, std::uint
     analysis::MomentsRecorder rec;
     e.run_until(until, &rec, 0.5);
     const std::vector<double> a2 = rec.column("a2"), t = rec.column("time");
-    for (const auto& [b, e2] : stretches(t, 0.5 * until, until)) {
-      double s = 0.0;
-      for (std::size_t i = b; i < e2; ++i) s += a2[i];
-      v.push_back(s / static_cast<double>(e2 - b));
-    }
+    for (const auto& [b, e2] : stretches(t, 0.5 * until, until))
+      v.push_back(analysis::range_mean(a2, b, e2));
   }
   return mean_se(v);
 }

@@ -279,4 +279,26 @@ struct EngineChoice {
   double packing = 0.0;  ///< EDMD packing fraction: the regime of the automatic scan
 };
 
+/// What callers outside the engine need to know of a collision model (the model type's
+/// static members, dsmc/models.hpp), as numbers: the exponent a of its pair rate |g|^a,
+/// its scattering law and whether the white-noise drive applies to it.
+struct ModelTraits {
+  double exponent = 1.0;
+  bool isotropic_scattering = false;
+  bool supports_drive = false;
+};
+
+/// The traits of the model named `name`, with a = vhs_exponent for the model whose exponent
+/// is a run parameter (vhs); throws InvalidInput for an unknown name.
+inline ModelTraits model_traits(std::string_view name, double vhs_exponent) {
+  return dispatch(
+      [&](auto model) {
+        using M = typename decltype(model)::type;
+        double a = vhs_exponent;
+        if constexpr (requires { M::exponent(); }) a = M::exponent();
+        return ModelTraits{a, M::isotropic_scattering, M::supports_drive};
+      },
+      model(name));
+}
+
 }  // namespace hypergas::registry

@@ -150,7 +150,7 @@ void validate_granular(const RunOptions& o) {
   if (driven && o.dim < 2)
     bad("--drive white-noise needs --dim >= 2 (its strength comes from the Sonine theory of "
         "D >= 2)");
-  if (driven && o.model != dsmc::HardSpheres::name)
+  if (driven && !registry::model_traits(o.model, o.vhs_exponent).supports_drive)
     bad(fmt::format("--drive white-noise is defined for --model {} only, not --model {}",
                     dsmc::HardSpheres::name, o.model));
   if (!driven && o.was_given("--drive-dt"))

@@ -24,6 +24,7 @@
 #include "hypergas/analysis/vacf_recorder.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/options/run_options.hpp"
+#include "hypergas/registry.hpp"
 #include "hypergas/observer.hpp"
 
 namespace hypergas::python {
@@ -149,9 +150,10 @@ void bind_observers(py::module_& m) {
              ts.warmup = warmup, ts.seed = as_seed(seed);
              const auto frames =
                  static_cast<std::uint64_t>(std::llround((until - warmup) / dt)) + 1;
+             const registry::ModelTraits m = registry::model_traits(model, vhs_exponent);
              return std::make_unique<analysis::TransportRecorder>(
-                 ts, static_cast<int>(d), static_cast<std::size_t>(nn), frames, model,
-                 model == "maxwell" ? 0.0 : model == "hs" ? 1.0 : vhs_exponent);
+                 ts, static_cast<int>(d), static_cast<std::size_t>(nn), frames,
+                 analysis::CollisionLaw{m.exponent, m.isotropic_scattering});
            }),
            py::arg("dim"), py::arg("n"), py::arg("until"), py::arg("dt") = 0.05,
            py::arg("max_lag") = 40.0, py::arg("tagged") = 32, py::arg("warmup") = 20.0,

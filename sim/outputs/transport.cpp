@@ -41,8 +41,9 @@ class TransportOutput final : public Output {
     ts.tagged = o.tagged;
     ts.warmup = options::transport_warmup;
     ts.seed = o.seed;
-    recorder_.emplace(ts, o.dim, static_cast<std::size_t>(o.n), frames, o.model,
-                      o.vhs_exponent);
+    const registry::ModelTraits m = registry::model_traits(o.model, o.vhs_exponent);
+    recorder_.emplace(ts, o.dim, static_cast<std::size_t>(o.n), frames,
+                      analysis::CollisionLaw{m.exponent, m.isotropic_scattering});
   }
 
   Observer* fine() override { return &*recorder_; }

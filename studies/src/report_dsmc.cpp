@@ -14,14 +14,17 @@
 #include <tuple>
 
 #include "clock.hpp"
+#include "hypergas/analysis/estimates.hpp"
 #include "hypergas/dsmc/engine.hpp"
 #include "hypergas/dsmc/maxwell_theory.hpp"
 #include "hypergas/registry.hpp"
 #include "hypergas/studies/replicas.hpp"
-#include "hypergas/studies/statistics.hpp"
 #include "report_parts.hpp"
 
 namespace hypergas::studies::detail {
+
+using analysis::MeanSe;
+using analysis::mean_se;
 
 namespace {
 

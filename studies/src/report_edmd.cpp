@@ -5,14 +5,17 @@
 #include <numbers>
 
 #include "clock.hpp"
+#include "hypergas/analysis/estimates.hpp"
 #include "hypergas/edmd/engine.hpp"
 #include "hypergas/edmd/observables.hpp"
 #include "hypergas/registry.hpp"
 #include "hypergas/studies/replicas.hpp"
-#include "hypergas/studies/statistics.hpp"
 #include "report_parts.hpp"
 
 namespace hypergas::studies::detail {
+
+using analysis::MeanSe;
+using analysis::mean_se;
 
 namespace {
 

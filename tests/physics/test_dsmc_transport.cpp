@@ -46,7 +46,7 @@ namespace {
 template <int D, class Model>
 std::vector<analysis::TransportCoefficient> measure(std::size_t n, double until,
                                                     const analysis::TransportSettings& ts,
-                                                    std::uint64_t seed, const std::string& model) {
+                                                    std::uint64_t seed) {
   dsmc::Config cfg;
   cfg.n = n;
   cfg.seed = seed;
@@ -55,7 +55,9 @@ std::vector<analysis::TransportCoefficient> measure(std::size_t n, double until,
   // the samples (the recorder's error stretches are cut from this count); run_until takes
   // at most 1e6 samples a call, so the run goes in stretches of 1000
   const auto frames = static_cast<std::uint64_t>(std::llround((until - ts.warmup) / ts.dt)) + 1;
-  analysis::TransportRecorder rec(ts, D, n, frames, model, Model{}.exponent());
+  // the model's collision law, from its type
+  analysis::TransportRecorder rec(ts, D, n, frames,
+                                  {Model{}.exponent(), Model::isotropic_scattering});
   for (double t = 0.0; t < until;) {
     t = std::min(until, t + 1000.0);
     e.run_until(t, &rec, ts.dt);
@@ -92,7 +94,7 @@ void check_maxwell() {
   ts.max_lag = 30.0;
   ts.tagged = 16;
   ts.warmup = 5.0;  // the Maxwellian start is the equilibrium already
-  const auto r = measure<D, dsmc::MaxwellMolecules>(N, 20000.0, ts, 70 + D, "maxwell");
+  const auto r = measure<D, dsmc::MaxwellMolecules>(N, 20000.0, ts, 70 + D);
   const double f = N / (N - 1.0);
   const double exact[3] = {0.5 * f, (D - 1.0) / (2.0 * D) * f, 0.5 * f};
   for (int g = 0; g < 3; ++g) {
@@ -131,10 +133,10 @@ TEST_CASE("Transport, hard spheres 3D: Pekeris-Alterman viscosity and conductivi
   // two runs of N = 1000 (one per thread), then one of N = 250
   std::vector<analysis::TransportCoefficient> r1, r2, r3;
   std::thread other([&] {
-    r3 = measure<3, dsmc::HardSpheres>(1000, until, ts, 2027, "hs");
-    r1 = measure<3, dsmc::HardSpheres>(250, until, ts, 2025, "hs");
+    r3 = measure<3, dsmc::HardSpheres>(1000, until, ts, 2027);
+    r1 = measure<3, dsmc::HardSpheres>(250, until, ts, 2025);
   });
-  r2 = measure<3, dsmc::HardSpheres>(1000, until, ts, 2026, "hs");
+  r2 = measure<3, dsmc::HardSpheres>(1000, until, ts, 2026);
   other.join();
   for (std::size_t g = 0; g < 3; ++g) {  // the mean of the two N = 1000 runs
     r2[g].ratio = 0.5 * (r2[g].ratio + r3[g].ratio);
@@ -168,5 +170,5 @@ TEMPLATE_TEST_CASE_SIG("Transport, hard spheres: Green-Kubo and Einstein self-di
   ts.max_lag = 20.0;
   ts.tagged = 32;
   ts.warmup = 5.0;
-  check_einstein(measure<D, dsmc::HardSpheres>(500, 4000.0, ts, 90 + D, "hs"), D);
+  check_einstein(measure<D, dsmc::HardSpheres>(500, 4000.0, ts, 90 + D), D);
 }

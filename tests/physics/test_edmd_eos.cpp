@@ -18,6 +18,7 @@
 
 #include "hypergas/edmd/engine.hpp"
 #include "hypergas/edmd/observables.hpp"
+#include "support/statistics.hpp"
 
 using namespace hypergas;
 using namespace hypergas::edmd;
@@ -27,18 +28,6 @@ namespace {
 struct Measured {
   double Z, Z_err, nu, nu_err, ratio, ratio_err;
 };
-
-double mean(const std::vector<double>& x) {
-  double s = 0;
-  for (double v : x) s += v;
-  return s / static_cast<double>(x.size());
-}
-double err(const std::vector<double>& x) {
-  const double m = mean(x);
-  double s = 0;
-  for (double v : x) s += (v - m) * (v - m);
-  return std::sqrt(s / static_cast<double>(x.size() - 1) / static_cast<double>(x.size()));
-}
 
 /// Equilibrates for t_eq, then measures B blocks of length t_block. ratio = (Z - 1) over the
 /// value that the identity (*) predicts from the measured collision rate.
@@ -59,7 +48,10 @@ Measured measure(std::size_t n, double eta, std::uint64_t seed, double t_eq, dou
     ratio.push_back((e.pressure_Z() - 1.0) /
                     (Z_from_rate(D, e.collision_rate(), 1.0, 1.0, e.temperature()) - 1.0));
   }
-  return {mean(Z), err(Z), mean(nu), err(nu), mean(ratio), err(ratio)};
+  const auto [z, z_err] = test_support::mean_se(Z);
+  const auto [nu_m, nu_err] = test_support::mean_se(nu);
+  const auto [r, r_err] = test_support::mean_se(ratio);
+  return {z, z_err, nu_m, nu_err, r, r_err};
 }
 
 }  // namespace

@@ -114,7 +114,8 @@ std::vector<TransportCoefficient> boltzmann(std::size_t n, double until, std::ui
   cfg.init = InitialState::maxwell;
   dsmc::Engine<D, dsmc::HardSpheres> e(cfg);
   const auto frames = static_cast<std::uint64_t>(std::llround((until - ts.warmup) / ts.dt)) + 1;
-  analysis::TransportRecorder rec(ts, D, n, frames, "hs", 1.0);
+  using HS = dsmc::HardSpheres;  // the hard-sphere collision law, from the model type
+  analysis::TransportRecorder rec(ts, D, n, frames, {HS::exponent(), HS::isotropic_scattering});
   for (double t = 0.0; t < until;) {
     t = std::min(until, t + 1000.0);
     e.run_until(t, &rec, ts.dt);

@@ -18,12 +18,12 @@
 #include <cmath>
 #include <vector>
 
+#include "hypergas/analysis/estimates.hpp"
 #include "hypergas/analysis/fit.hpp"
 #include "hypergas/dsmc/engine.hpp"
 #include "hypergas/edmd/engine.hpp"
 #include "hypergas/granular/theory.hpp"
 #include "hypergas/observer.hpp"
-#include "hypergas/studies/statistics.hpp"
 
 using namespace hypergas;
 
@@ -51,23 +51,18 @@ struct Samples final : Observer {
   }
 };
 
-using studies::MeanSe;
+using analysis::MeanSe;
 using analysis::line_slope;
 
 /// Mean and standard error of f over 8 consecutive blocks of samples [b, e).
 template <class F>
 MeanSe blocks(std::size_t b, std::size_t e, F f) {
-  constexpr std::size_t k = 8;
-  const std::size_t len = (e - b) / k;
-  std::vector<double> v;
-  for (std::size_t j = 0; j < k; ++j) v.push_back(f(b + j * len, b + (j + 1) * len));
-  return studies::mean_se(v);
+  return analysis::over_blocks(b, e, 8, f);
 }
 
-double mean(const std::vector<double>& y, std::size_t b, std::size_t e) {
-  double s = 0.0;
-  for (std::size_t i = b; i < e; ++i) s += y[i];
-  return s / static_cast<double>(e - b);
+/// The block mean of y over [b, e): one block's value for blocks().
+auto mean_of(const std::vector<double>& y) {
+  return [&y](std::size_t b, std::size_t e) { return analysis::range_mean(y, b, e); };
 }
 
 template <int D>
@@ -89,7 +84,7 @@ template <int D>
 void check_hcs_a2(double alpha) {
   const Samples s = cooling_dsmc<D>(alpha, 50000, 80.0, 100 + static_cast<std::uint64_t>(100 * alpha));
   const std::size_t n = s.a2.size();
-  const MeanSe a2 = blocks(n / 2, n, [&](std::size_t b, std::size_t e) { return mean(s.a2, b, e); });
+  const MeanSe a2 = blocks(n / 2, n, mean_of(s.a2));
   const double theory = granular::a2_hcs(alpha, D);
   INFO("D = " << D << ", alpha = " << alpha << ": a2 = " << a2.mean << " +- " << a2.se
               << ", first Sonine " << theory << ", band " << granular::hcs_band(alpha, D));
@@ -110,7 +105,7 @@ TEMPLATE_TEST_CASE_SIG("HCS a2 changes sign near alpha = 1/sqrt(2)", "[granular]
   for (const double alpha : {0.5, 0.9}) {
     const Samples s = cooling_dsmc<D>(alpha, 50000, 40.0, 7);
     const std::size_t n = s.a2.size();
-    const MeanSe a2 = blocks(n / 2, n, [&](std::size_t b, std::size_t e) { return mean(s.a2, b, e); });
+    const MeanSe a2 = blocks(n / 2, n, mean_of(s.a2));
     INFO("D = " << D << ", alpha = " << alpha << ": a2 = " << a2.mean << " +- " << a2.se);
     if (alpha < 0.7) CHECK(a2.mean > 4.5 * a2.se);
     else CHECK(a2.mean < -4.5 * a2.se);
@@ -155,8 +150,8 @@ TEST_CASE("White-noise driven steady state: temperature and a2", "[granular][phy
   for (const double alpha : {0.5, 0.8}) {
     const Samples s = cooling_dsmc<3>(alpha, 20000, 40.0, 41, dsmc::Drive::white_noise);
     const std::size_t n = s.T.size();
-    const MeanSe T = blocks(n / 2, n, [&](std::size_t b, std::size_t e) { return mean(s.T, b, e); });
-    const MeanSe a2 = blocks(n / 2, n, [&](std::size_t b, std::size_t e) { return mean(s.a2, b, e); });
+    const MeanSe T = blocks(n / 2, n, mean_of(s.T));
+    const MeanSe a2 = blocks(n / 2, n, mean_of(s.a2));
     const double theory = granular::a2_white_noise(alpha, 3);
     INFO("alpha = " << alpha << ": T/T0 = " << T.mean / s.T.front() << " +- " << T.se / s.T.front()
                     << ", a2 = " << a2.mean << " +- " << a2.se << ", Sonine " << theory);

@@ -1,5 +1,5 @@
-// Shared statistics of the tests: replicas on two threads, mean and standard error, the
-// Student-t threshold and the Kolmogorov-Smirnov test.
+// Shared statistics of the tests: replicas on two threads, mean and standard error
+// (analysis/estimates.hpp, header-only), the Student-t threshold and the Kolmogorov-Smirnov test.
 #pragma once
 
 #include <gsl/gsl_cdf.h>
@@ -8,10 +8,11 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
-#include <numeric>
 #include <thread>
 #include <utility>
 #include <vector>
+
+#include "hypergas/analysis/estimates.hpp"
 
 namespace test_support {
 
@@ -27,14 +28,8 @@ void for_replicas(int R, F&& f) {
   t.join();
 }
 
-/// Mean and standard error of the mean of a sample of at least 2.
-inline std::pair<double, double> mean_se(const std::vector<double>& x) {
-  const double n = static_cast<double>(x.size());
-  const double m = std::accumulate(x.begin(), x.end(), 0.0) / n;
-  double s2 = 0.0;
-  for (double v : x) s2 += (v - m) * (v - m);
-  return {m, std::sqrt(s2 / (n - 1.0) / n)};
-}
+/// Mean and standard error of the mean (the analysis library's header-only definition).
+using hypergas::analysis::mean_se;
 
 /// Two-sided Student-t threshold with false-failure probability p for R replicas.
 inline double t_threshold(double p, int R) { return gsl_cdf_tdist_Qinv(0.5 * p, R - 1.0); }

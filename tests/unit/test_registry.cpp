@@ -67,6 +67,22 @@ TEST_CASE("registry: every entry's name round-trips and has a help text", "[regi
   REQUIRE(registry::name(registry::default_initial_state(registry::EngineKind::edmd)) == "maxwell");
 }
 
+TEST_CASE("registry: model traits come from the model types", "[registry]") {
+  const registry::ModelTraits hs = registry::model_traits("hs", 0.3);
+  REQUIRE(hs.exponent == dsmc::HardSpheres::exponent());
+  REQUIRE(!hs.isotropic_scattering);
+  REQUIRE(hs.supports_drive);
+  const registry::ModelTraits mm = registry::model_traits("maxwell", 0.3);
+  REQUIRE(mm.exponent == 0.0);
+  REQUIRE(mm.isotropic_scattering);
+  REQUIRE(!mm.supports_drive);
+  const registry::ModelTraits vhs = registry::model_traits("vhs", 0.3);
+  REQUIRE(vhs.exponent == 0.3);  // a run parameter
+  REQUIRE(vhs.isotropic_scattering);
+  REQUIRE(!vhs.supports_drive);
+  REQUIRE_THROWS_AS(registry::model_traits("soft", 0.3), InvalidInput);
+}
+
 TEST_CASE("registry: EDMD scan names resolve to the policy types", "[registry]") {
   REQUIRE(registry::scan_names().front() == "auto");
   for (auto n : registry::scan_names()) {

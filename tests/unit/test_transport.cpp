@@ -11,6 +11,7 @@
 #include "hypergas/analysis/correlator.hpp"
 #include "hypergas/analysis/transport_recorder.hpp"
 #include "hypergas/dsmc/engine.hpp"
+#include "hypergas/registry.hpp"
 #include "hypergas/rng.hpp"
 #include "hypergas/tally/fluxes.hpp"
 #include "hypergas/tally/tally.hpp"
@@ -129,26 +130,40 @@ TEST_CASE("BlockCorrelator: every lag over every origin, as the direct sum", "[t
 }
 
 TEST_CASE("First Sonine values: hard spheres and isotropic scattering", "[transport]") {
+  // the collision laws of the models, as registry::model_traits gives them
+  const auto law = [](const char* model, double vhs_exponent) {
+    const registry::ModelTraits m = registry::model_traits(model, vhs_exponent);
+    return analysis::CollisionLaw{m.exponent, m.isotropic_scattering};
+  };
+  const analysis::CollisionLaw hs = law("hs", 0.5), maxwell = law("maxwell", 0.5),
+                               iso1 = law("vhs", 1.0), iso0 = law("vhs", 0.0);
+  REQUIRE(hs.exponent == 1.0);
+  REQUIRE(!hs.isotropic_scattering);
+  REQUIRE(maxwell.exponent == 0.0);
+  REQUIRE(maxwell.isotropic_scattering);
+  REQUIRE(iso1.exponent == 1.0);
   // 3D hard spheres: eta* = 5/4, lambda* = 15/4 eta*, D* = 3/2 (Chapman & Cowling)
-  const auto hs3 = analysis::first_sonine("hs", 1.0, 3);
+  const auto hs3 = analysis::first_sonine(hs, 3);
   REQUIRE(hs3[0] == Approx(1.25));
   REQUIRE(hs3[1] == Approx(15.0 / 4.0 * 1.25));
   REQUIRE(hs3[2] == Approx(1.5));
   // in 3D hard-sphere scattering is isotropic: vhs with a = 1 gives the same values
-  const auto vhs3 = analysis::first_sonine("vhs", 1.0, 3);
+  const auto vhs3 = analysis::first_sonine(iso1, 3);
   for (int k = 0; k < 3; ++k) REQUIRE(vhs3[std::size_t(k)] == Approx(hs3[std::size_t(k)]));
   // elsewhere it is not: 4D eta*(hs) = 3/2, eta*(isotropic, a = 1) = 48/35
-  REQUIRE(analysis::first_sonine("hs", 1.0, 4)[0] == Approx(1.5));
-  REQUIRE(analysis::first_sonine("vhs", 1.0, 4)[0] == Approx(48.0 / 35.0));
+  REQUIRE(analysis::first_sonine(hs, 4)[0] == Approx(1.5));
+  REQUIRE(analysis::first_sonine(iso1, 4)[0] == Approx(48.0 / 35.0));
   // Maxwell molecules: eta* = 2, D* = 2 in every D; vhs with a = 0 is the same model
   for (int d = 2; d <= 6; ++d) {
-    const auto m = analysis::first_sonine("maxwell", 0.0, d);
+    const auto m = analysis::first_sonine(maxwell, d);
     REQUIRE(m[0] == Approx(2.0));
     REQUIRE(m[1] == Approx(2.0 * d * (d + 2.0) / (2.0 * (d - 1.0))));
     REQUIRE(m[2] == Approx(2.0));
-    REQUIRE(analysis::first_sonine("vhs", 0.0, d)[1] == Approx(m[1]));
+    REQUIRE(analysis::first_sonine(iso0, d)[1] == Approx(m[1]));
   }
-  REQUIRE_THROWS(analysis::first_sonine("hs", 1.0, 1));
+  REQUIRE_THROWS(analysis::first_sonine(hs, 1));
+  // hard-sphere scattering has first Sonine values for its own rate exponent only
+  REQUIRE_THROWS(analysis::first_sonine(analysis::CollisionLaw{0.5, false}, 3));
 }
 
 TEST_CASE("Fluxes: refused by the NTC scheme", "[transport]") {

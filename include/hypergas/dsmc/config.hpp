@@ -9,6 +9,7 @@
 #include "hypergas/dsmc/models.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/initial_state.hpp"
+#include "hypergas/restitution.hpp"
 
 namespace hypergas::dsmc {
 
@@ -50,8 +51,7 @@ inline void validate(const Config& c) {
     throw InvalidInput("DSMC: VHS exponent must be in [0, 1]");
   if (c.scheme == Scheme::ntc && !(std::isfinite(c.dt) && c.dt > 0.0))
     throw InvalidInput("DSMC: NTC time step must be finite and > 0");
-  if (!(c.restitution >= 0.0 && c.restitution <= 1.0))
-    throw InvalidInput("DSMC: the coefficient of restitution must be in [0, 1]");
+  check_restitution(c.restitution, "DSMC: ");
   if (c.drive == Drive::white_noise) {
     if (!(c.restitution < 1.0))
       throw InvalidInput("DSMC: the white-noise drive needs a restitution below 1 (an elastic "

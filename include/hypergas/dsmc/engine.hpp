@@ -262,7 +262,7 @@ class Engine {
     s_.c = dsmc::rate_constant(s_.p, s_.model.exponent());
     s_.kT0 = equilibrium_temperature(s_.p);
     s_.impulse = impulse_of(cfg);
-    if (cfg.drive != Drive::none && !std::is_same_v<Model, HardSpheres>)
+    if (cfg.drive != Drive::none && !Model::supports_drive)
       throw InvalidInput("DSMC: the white-noise drive is defined for hard spheres (--model hs)");
     if (cfg.drive != Drive::none && D < 2)
       throw InvalidInput("DSMC: the white-noise drive needs D >= 2 (its strength comes from the "
@@ -279,7 +279,7 @@ class Engine {
     return p;
   }
   /// The factor (1 + alpha)/2 of the collisions' impulse (State::impulse: derived, not saved).
-  static double impulse_of(const Config& cfg) { return 0.5 * (1.0 + cfg.restitution); }
+  static double impulse_of(const Config& cfg) { return restitution_impulse(cfg.restitution); }
   static Model make_model(const Config& cfg) {
     if constexpr (std::is_same_v<Model, VariableHardSpheres>)
       return Model(cfg.vhs_exponent);

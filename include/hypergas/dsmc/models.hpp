@@ -7,6 +7,10 @@
 //   MaxwellMolecules     a = 0, isotropic scattering (VSS with alpha = 1): every candidate
 //                        collides, no majorant and no rejection are compiled in;
 //   VariableHardSpheres  0 <= a <= 1 (runtime), isotropic scattering (Bird's VHS).
+// What the rest of the code needs to know of a model is on its type: `exponent()` (a),
+// `isotropic_scattering` (the law of g', from which with a the analysis computes the first
+// Sonine transport values) and `supports_drive` (the white-noise drive of dsmc/granular.hpp,
+// whose strength comes from the hard-sphere Sonine theory).
 // `accept(g2, u, bound)` decides a candidate pair with |g|^2 = g2 against the majorant
 // bound G >= |g| for a uniform u in [0, 1): accepted with probability (|g|/G)^a. Hard
 // spheres compare squares, so rejected candidates cost no square root.
@@ -26,6 +30,8 @@ struct HardSpheres {
   static constexpr bool needs_majorant = true;
   static constexpr std::string_view name = "hs";
   static constexpr std::string_view help = "hard spheres: pair rate ~ |g|, specular reflection";
+  static constexpr bool isotropic_scattering = false;
+  static constexpr bool supports_drive = true;
   /// The exponent a of the rate |g|^a.
   static constexpr double exponent() { return 1.0; }
   /// Accept with probability |g| / G: (u G)^2 < |g|^2.
@@ -43,6 +49,8 @@ struct MaxwellMolecules {
   static constexpr std::string_view name = "maxwell";
   static constexpr std::string_view help =
       "Maxwell molecules: pair rate independent of |g|, isotropic scattering";
+  static constexpr bool isotropic_scattering = true;
+  static constexpr bool supports_drive = false;
   static constexpr double exponent() { return 0.0; }
   static bool accept(double, double, double) { return true; }
   template <int D, class G>
@@ -58,6 +66,8 @@ class VariableHardSpheres {
   static constexpr std::string_view name = "vhs";
   static constexpr std::string_view help =
       "variable hard spheres: pair rate ~ |g|^a (--vhs-exponent a), isotropic scattering";
+  static constexpr bool isotropic_scattering = true;
+  static constexpr bool supports_drive = false;
   /// Throws InvalidInput unless 0 <= a <= 1.
   explicit VariableHardSpheres(double a = 0.5) : a_(a), half_a_(0.5 * a) {
     if (!(a >= 0.0 && a <= 1.0)) throw InvalidInput("VHS exponent must be in [0, 1]");
@@ -83,6 +93,8 @@ concept CollisionModel = requires(const M m, double x) {
   { M::name } -> std::convertible_to<std::string_view>;
   { M::help } -> std::convertible_to<std::string_view>;
   { M::needs_majorant } -> std::convertible_to<bool>;
+  { M::isotropic_scattering } -> std::convertible_to<bool>;
+  { M::supports_drive } -> std::convertible_to<bool>;
   { m.exponent() } -> std::convertible_to<double>;
   { m.accept(x, x, x) } -> std::convertible_to<bool>;
 };

@@ -88,17 +88,26 @@ struct TransportCoefficient {
 /// Both engines' recorders write it.
 void write_transport_rows(const std::string& path, const std::vector<TransportCoefficient>& rows);
 
-/// The reduced first Sonine values of model `model` ("hs", "maxwell", "vhs" with rate
-/// exponent a) in D dimensions: {eta*, lambda*, D*}. Throws InvalidInput for other models
-/// or D < 2.
-std::vector<double> first_sonine(const std::string& model, double a, int dim);
+/// What the first Sonine values need to know of a DSMC collision model (the model type's
+/// exponent() and isotropic_scattering, dsmc/models.hpp; registry::model_traits by name):
+/// the exponent a of its pair rate |g|^a and its law of scattering, isotropic (Maxwell
+/// molecules a = 0, VHS) or specular at a hard-sphere normal (hard spheres, a = 1).
+struct CollisionLaw {
+  double exponent = 1.0;
+  bool isotropic_scattering = false;
+};
+
+/// The reduced first Sonine values of a gas with collision law `law` in D dimensions:
+/// {eta*, lambda*, D*}. Throws InvalidInput for D < 2 and for hard-sphere scattering with
+/// a rate exponent other than 1.
+std::vector<double> first_sonine(const CollisionLaw& law, int dim);
 
 class TransportRecorder final : public Observer {
  public:
   /// A recorder for a D-dimensional one-species gas of n particles, `frames` planned
   /// samples from the first at or after s.warmup. Throws InvalidInput on bad settings.
   TransportRecorder(const TransportSettings& s, int dim, std::size_t n, std::uint64_t frames,
-                    std::string model, double exponent);
+                    CollisionLaw law);
 
   void observe(const Snapshot& s) override;
   /// Samples taken so far.
@@ -120,8 +129,7 @@ class TransportRecorder final : public Observer {
   TransportSettings set_;
   int dim_;
   std::size_t n_;
-  std::string model_;
-  double exponent_;
+  CollisionLaw law_;
   std::vector<std::size_t> tagged_;
   BlockCorrelator corr_;
   double kT_ = 0.0;

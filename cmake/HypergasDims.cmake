@@ -6,7 +6,8 @@
 #
 # configures <file.cpp.in> once per dimension D with @HYPERGAS_DIM@ = D into
 # <binary dir>/<name>_<D>d.cpp and appends the generated paths to <out-var>.
-include_guard(GLOBAL)
+# Included by every directory that generates per-dimension files (the variables are set in
+# the including directory's scope, so no include guard).
 
 file(STRINGS ${CMAKE_CURRENT_LIST_DIR}/../include/hypergas/vec.hpp _hypergas_dim_lines
      REGEX "inline constexpr int (min|max)_dim = [0-9]+;")

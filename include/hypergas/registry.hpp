@@ -222,9 +222,7 @@ inline std::string_view name(dsmc::Scheme s) { return name_of(schemes, s); }
 
 /// The dimension `d` as a choice; throws InvalidInput outside min_dim..max_dim.
 inline Choice<Dims> dimension(int d) {
-  if (d < min_dim || d > max_dim)
-    throw InvalidInput("dimension must be in " + std::to_string(min_dim) + ".." +
-                       std::to_string(max_dim) + ", got " + std::to_string(d));
+  check_dimension(d);
   return {static_cast<std::size_t>(d - min_dim)};
 }
 

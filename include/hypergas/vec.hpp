@@ -38,15 +38,21 @@ constexpr void for_each_dim(F&& f) {
   (std::make_integer_sequence<int, max_dim>{});
 }
 
-/// Calls `f(DimTag<D>{})` for the runtime dimension d (D = d) and returns what f returns
-/// (the same type for every D), through a table of function pointers: the one place where a
-/// runtime dimension becomes a template argument (registry::dispatch's dimension axis uses
-/// it too). Throws InvalidInput for d outside min_dim..max_dim.
-template <class F>
-decltype(auto) for_dim(int d, F&& f) {
+/// Throws InvalidInput for a dimension outside min_dim..max_dim (for_dim and
+/// registry::dimension check with it).
+inline void check_dimension(int d) {
   if (d < min_dim || d > max_dim)
     throw InvalidInput("dimension must be in " + std::to_string(min_dim) + ".." +
                        std::to_string(max_dim) + ", got " + std::to_string(d));
+}
+
+/// Calls `f(DimTag<D>{})` for the runtime dimension d (D = d) and returns what f returns
+/// (the same type for every D), through a table of function pointers: the one place where a
+/// runtime dimension becomes a template argument. Throws InvalidInput for d outside
+/// min_dim..max_dim.
+template <class F>
+decltype(auto) for_dim(int d, F&& f) {
+  check_dimension(d);
   using R = decltype(f(DimTag<min_dim>{}));
   using Fn = R (*)(F&);
   static constexpr auto table = []<int... Ds>(std::integer_sequence<int, Ds...>) {

@@ -25,9 +25,11 @@ unset logscale y
 set output 'kurtosis.png'
 set title 'Kurtosis of v_x (Maxwell-Boltzmann: 3)'
 set ylabel 'kurtosis'
+set key outside right top  # beside the curves, which start at 3D/(D+2) and meet at 3
 plot for [d in dims] sprintf('relaxation_D%s.csv', d) \
        using 'collisions_per_particle':'kurtosis_x' with lines lw 2 title 'D = '.d, \
      3 with lines dt 2 lc 'black' title 'MB'
+set key inside
 set terminal pngcairo size 1200,700 font ',10'
 set output 'speed_histograms.png'
 unset title

@@ -1,13 +1,17 @@
 // sim/commands.hpp -- the subcommands of `hypergas`, each in its own file.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <string>
 
 #include "hypergas/checkpoint.hpp"
 #include "options.hpp"
 #include "ranks.hpp"
+
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
 
 namespace hypergas::cli {
 

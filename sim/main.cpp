@@ -13,6 +13,8 @@
 #include <fmt/core.h>
 
 #include "commands.hpp"
+#include "hypergas/options/suggest.hpp"
+#include "version.hpp"
 #include "hypergas/studies/replicas.hpp"
 #include "hypergas/error.hpp"
 #include "progress.hpp"
@@ -27,6 +29,35 @@ std::string parse_message(const CLI::ParseError& e) {
   if (dynamic_cast<const CLI::ArgumentMismatch*>(&e) && at != std::string::npos)
     return m.substr(0, at) + " was given more than once; give it once";
   return m;
+}
+
+/// One line for arguments the command does not know: the first unknown option (or word),
+/// the (sub)command it was given to, and the nearest name it knows (options::nearest).
+std::string extras_message(CLI::App& app) {
+  CLI::App* where = &app;
+  for (CLI::App* sub : app.get_subcommands())
+    if (!sub->remaining().empty()) where = sub;
+  const std::vector<std::string> extra = where->remaining();
+  if (extra.empty()) return "hypergas: unexpected arguments (see --help)";
+  std::string arg = extra.front();
+  for (const std::string& a : extra)
+    if (a.rfind('-', 0) == 0) {
+      arg = a;
+      break;
+    }
+  const bool option = arg.rfind('-', 0) == 0;
+  std::vector<std::string> names;
+  if (option) {
+    for (const CLI::Option* opt : where->get_options())
+      for (const std::string& l : opt->get_lnames()) names.push_back("--" + l);
+  } else if (where == &app) {
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+      names.push_back(sub->get_name());
+  }
+  // every message starts "hypergas:" (the contract, docs/design.md)
+  const std::string who = where == &app ? "" : where->get_name() + ": ";
+  return fmt::format("hypergas: {}unknown {} '{}'{}", who, option ? "option" : "argument", arg,
+                     hypergas::options::did_you_mean(arg, names));
 }
 }  // namespace
 
@@ -43,6 +74,7 @@ int main(int argc, char** argv) {
       "D = 1..6, prints a table and writes CSV and PNG files under --out.",
       "hypergas"};
   app.require_subcommand(0, 1);
+  app.set_version_flag("--version", std::string(hypergas::cli::version_line()));
 
   SceneOptions scene;
   app.add_option("--out,-o", scene.out, "default scene: output folder for CSV and PNG files")
@@ -73,8 +105,11 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help
     return app.exit(e);
+  } catch (const CLI::ExtrasError&) {
+    fmt::print(stderr, "{}\n", extras_message(app));
+    return 2;
   } catch (const CLI::ParseError& e) {
-    fmt::print(stderr, "hypergas: {}\nRun with --help for the options.\n", parse_message(e));
+    fmt::print(stderr, "hypergas: {} (see --help)\n", parse_message(e));
     return 2;
   }
 

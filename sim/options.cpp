@@ -5,6 +5,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 #include <fmt/ranges.h>
 

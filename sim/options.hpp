@@ -12,9 +12,13 @@
 #include <utility>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "hypergas/options/table.hpp"
+
+// CLI11 is parsed only by the files that register options (it costs seconds per file).
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
 
 namespace hypergas::cli {
 

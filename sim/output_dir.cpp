@@ -29,6 +29,42 @@ std::string not_writable(const fs::path& dir, const std::string& why) {
   return fmt::format("output folder '{}' is not writable: {}", dir.string(), why);
 }
 
+/// The names listed in `dir`'s manifest (none without one).
+std::vector<std::string> read_manifest(const fs::path& dir) {
+  std::vector<std::string> names;
+  std::ifstream f(dir / OutputDir::manifest);
+  for (std::string line; std::getline(f, line);)
+    if (!line.empty()) names.push_back(line);
+  return names;
+}
+
+/// Writes `names` as dir's manifest (through a temporary file and a rename).
+void write_manifest(const fs::path& dir, const std::vector<std::string>& names) {
+  const fs::path tmp = dir / (std::string(OutputDir::manifest) + ".tmp");
+  {
+    std::ofstream f(tmp, std::ios::binary);
+    for (const std::string& n : names) f << n << '\n';
+    if (!f) throw std::runtime_error(fmt::format("cannot write '{}'", tmp.string()));
+  }
+  fs::rename(tmp, dir / OutputDir::manifest);
+}
+
+/// The first entry of `dir` that no commit listed in `owned` wrote, or "".
+std::string foreign_entry(const fs::path& dir, const std::vector<std::string>& owned) {
+  const std::string manifest = OutputDir::manifest;
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) names.push_back(e.path().filename());
+  std::sort(names.begin(), names.end());
+  for (const std::string& n : names) {
+    // the run's own bookkeeping: its checkpoint (run_driver.hpp) and the manifest
+    if (n == manifest || n == manifest + ".tmp" || n.rfind("checkpoint.hgck", 0) == 0)
+      continue;
+    if (std::find(owned.begin(), owned.end(), n) == owned.end()) return n;
+  }
+  return {};
+}
+
 [[noreturn]] void unwritable(const fs::path& dir, const std::string& why) {
   throw InvalidInput(not_writable(dir, why));
 }
@@ -56,6 +92,13 @@ OutputDir::OutputDir(fs::path dir) : dir_(std::move(dir)) {
   // the same checkpoint and files.
   folder_.open(dir_, words);
   remove_stale_staging(dir_);
+  previous_ = read_manifest(dir_);
+  if (const std::string n = foreign_entry(dir_, previous_); !n.empty()) {
+    folder_.unlock();
+    throw InvalidInput(fmt::format("output folder '{}' holds '{}', which hypergas did not "
+                                   "write there: give a new or empty folder",
+                                   dir_.string(), n));
+  }
   staging_ = dir_ / fmt::format(".hypergas-staging-{}", ::getpid());
   std::error_code ec;
   if (!fs::create_directory(staging_, ec) || ec || ::access(staging_.c_str(), W_OK) != 0) {
@@ -93,12 +136,28 @@ void OutputDir::commit() {
     const bool sa = a.filename() == "summary.json", sb = b.filename() == "summary.json";
     return sa != sb ? sb : a < b;
   });
+  std::vector<std::string> names;
+  for (const fs::path& p : files) names.push_back(p.filename().string());
+  // the manifest lists the old and the new files while both may be present, so a process
+  // killed in between leaves a folder the next run accepts
+  std::vector<std::string> both = previous_;
+  for (const std::string& n : names)
+    if (std::find(both.begin(), both.end(), n) == both.end()) both.push_back(n);
+  write_manifest(dir_, both);
   committed_.clear();
-  for (const fs::path& p : files) {
-    fs::rename(p, dir_ / p.filename());  // throws filesystem_error on failure
-    committed_.push_back(p.filename().string());
-  }
+  const auto move = [&](std::size_t k) {
+    fs::rename(files[k], dir_ / names[k]);  // throws filesystem_error on failure
+    committed_.push_back(names[k]);
+  };
+  const bool summary = !names.empty() && names.back() == "summary.json";  // sorted last
+  for (std::size_t k = 0; k + (summary ? 1 : 0) < files.size(); ++k) move(k);
+  // the previous run's files that this one did not write go before summary.json arrives
   std::error_code ec;
+  for (const std::string& n : previous_)
+    if (std::find(names.begin(), names.end(), n) == names.end()) fs::remove(dir_ / n, ec);
+  write_manifest(dir_, names);
+  if (summary) move(files.size() - 1);
+  previous_ = names;
   fs::remove_all(staging_, ec);
   done_ = true;
 }

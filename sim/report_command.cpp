@@ -4,6 +4,7 @@
 // bench_report); this file gives it the command's options, exit codes and output-folder
 // handling (all files or none). Under mpirun its replicas spread over the ranks
 // (ranks.hpp: ReplicaRanks); rank 0 writes the files.
+#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include "commands.hpp"

@@ -4,6 +4,7 @@
 // the run's arguments. The arguments are parsed and validated again exactly as `hypergas run`
 // parses them, with --out DIR; the engine, the recorders and the loop's position are then
 // restored and the run goes on, writing the same files a run that never stopped writes.
+#include <CLI/CLI.hpp>
 #include <filesystem>
 
 #include <fmt/core.h>

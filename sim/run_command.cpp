@@ -43,7 +43,9 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume, bool quiet) {
   // CSV and plots first, so that summary.json can say how long they took (output_s).
   const auto t0 = std::chrono::steady_clock::now();
   for (const auto& output : rec.outputs) output->write(out);
-  plot.finish(plot_script(rec.outputs));
+  const std::string script = plot_script(rec.outputs, rec.summary);
+  out.write("plot.gp", script);  // to draw the PNGs again, or otherwise: gnuplot plot.gp
+  plot.finish(script);
   rec.summary.emplace_back(
       "output_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   const analysis::JsonObject& summary = rec.summary;
@@ -60,15 +62,30 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume, bool quiet) {
   fmt::print("{} D={} model={} n={} seed={}: {} collisions in {} s ({} collisions/s)\n",
              f("engine"), f("dim"), f("model"), f("n"), f("seed"), f("collisions"), f("wall_s"),
              f("collisions_per_s"));
-  fmt::print("  final kurtosis_x {} (MB 3), KS p-value of speeds {}, energy drift {}, "
+  const bool granular = o.restitution != 1.0;
+  fmt::print("  final kurtosis_x {} (MB 3), KS p-value of speeds {}{}, energy drift {}, "
              "momentum drift {}\n",
-             f("kurtosis_x"), f("ks_p_speed"), f("energy_rel_drift"), f("momentum_drift"));
+             f("kurtosis_x"), f("ks_p_speed"),
+             granular ? " (against MB: a cooling gas is not Maxwellian)" : "",
+             f("energy_rel_drift"), f("momentum_drift"));
+  if (granular) {
+    // the measurements of a cooling or driven gas beside first Sonine theory
+    std::string g = fmt::format("  restitution {}: a2 {} +- {} (first Sonine {})",
+                                f("restitution"), f("a2_mean"), f("a2_error"), f("a2_sonine"));
+    if (summary_field(summary, "haff_t0") != "-") {
+      g += fmt::format(", Haff's t0 {} +- {} ({} {})", f("haff_t0"), f("haff_t0_error"),
+                       edmd ? "Enskog" : "first Sonine",
+                       f(edmd ? "haff_t0_enskog" : "haff_t0_sonine"));
+    }
+    fmt::print("{}, T / T0 at the end {}\n", g, f("temperature_ratio"));
+  }
   std::string lines;
   for (const auto& output : rec.outputs) output->report(lines, summary);
   fmt::print("{}", lines);
   if (edmd)
-    fmt::print("  packing {}, Z = PV/NkT {}, collision rate {}, mean free time {}\n",
-               f("packing"), f("Z"), f("collision_rate"), f("mean_free_time"));
+    fmt::print("  packing {}, Z = PV/NkT {} +- {}, collision rate {} +- {}, mean free time {}\n",
+               f("packing"), f("Z"), f("Z_error"), f("collision_rate"),
+               f("collision_rate_error"), f("mean_free_time"));
   std::string files;
   for (const auto& name : out.committed()) files += (files.empty() ? "" : ", ") + name;
   fmt::print("  wrote {}/: {}\n", out.dir().string(), files);

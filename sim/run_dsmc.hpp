@@ -47,10 +47,12 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
   // per replica; under MPI (studies::ReplicaSpread) these reach rank 0 from every rank
   std::vector<double> engine_s(k), rate(k), drift_e(k), drift_p(k), cpp(k), coll(k), kurt(k);
   DriverState st0;
-  double engine_bpp = 0.0;
+  double engine_bpp = 0.0, setup_s = 0.0;
   const auto t0 = Clock::now();
   const auto body = [&](int r, Engine& engine, DriverState& st, const Conserved<Engine::dim>& c0,
                         Checkpointer& ck) {
+    // the engine is made (or restored): what came before the first collision
+    if (r == 0) setup_s = std::chrono::duration<double>(Clock::now() - t0).count();
     engine.set_threads(o.threads);
     RunObserver obs(r == 0 ? samplers(rec.outputs) : std::vector<Observer*>{others[r]->sampler()},
                     "dsmc", until, progress && r == 0);
@@ -102,6 +104,7 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
   f.every = every;
   f.fraction = two_species(o) ? o.fraction : 0.0;
   f.engine_bytes_per_particle = engine_bpp;
+  f.setup_s = setup_s;
   // one replica has no standard error (NaN, analysis/estimates.hpp); its summary says 0
   const auto [kurt_mean, kurt_se_k] = analysis::mean_se(kurt);
   const double kurt_se = k == 1 ? 0.0 : kurt_se_k;

@@ -8,9 +8,13 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
+
+#include <fmt/core.h>
 
 #include "engine_runs.hpp"
 #include "hypergas/conserved.hpp"
+#include "hypergas/edmd/lattice.hpp"
 #include "hypergas/edmd/observables.hpp"
 #include "hypergas/engine_concept.hpp"
 #include "hypergas/granular/theory.hpp"
@@ -49,6 +53,21 @@ RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
   edmd::Config elastic = cfg;
   elastic.restitution = 1.0;  // the equilibration
   Engine& engine = start_engine(e, elastic, ctx, st, c0, rec.outputs);
+  const double setup_s = std::chrono::duration<double>(Clock::now() - t0).count();
+  // a lattice start with vacancies (N below the lattice's sites) is said, not hidden
+  const std::uint64_t side = edmd::lattice_side(D, static_cast<std::size_t>(o.n));
+  const auto sites = static_cast<std::int64_t>(edmd::lattice_capacity(D, side));
+  const std::int64_t vacancies = sites - static_cast<std::int64_t>(o.n);
+  if (vacancies > 0 && progress && !ctx.resume) {
+    const std::uint64_t step = D >= 3 ? 2 : 1;
+    std::string fill = fmt::format("{}", sites);
+    if (side > step)
+      fill = fmt::format("{} or {}", edmd::lattice_capacity(D, side - step), sites);
+    fmt::print(stderr,
+               "hypergas: note: {} particles start on a lattice of {} sites ({} vacancies, "
+               "{:.1f} %); N = {} fill a lattice in D = {}\n",
+               o.n, sites, vacancies, 100.0 * static_cast<double>(vacancies) / sites, fill, D);
+  }
   RunObserver obs(samplers(rec.outputs), "edmd", until, progress);
   const auto save = [&](checkpoint::Writer& w) { save_run(w, o, st, c0, engine, rec.outputs); };
   drive(engine, plan, st, obs, ctx.checkpoints, save);
@@ -71,6 +90,7 @@ RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
   f.every = every;
   f.fraction = two_species(o) ? o.fraction : 0.0;
   f.engine_bytes_per_particle = engine.bytes_per_particle();
+  f.setup_s = setup_s;
   analysis::JsonObject keys{
       {"packing", engine.packing()},
       {"scan", std::string(Engine::scan_name)},
@@ -80,6 +100,8 @@ RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
       {"equilibration_time", t_eq},
       {"kT", engine.temperature()},
       {"contact_value_from_Z", granular ? nan : edmd::contact_value(D, Z, engine.packing())},
+      {"lattice_sites", sites},
+      {"vacancies", vacancies},
   };
   if (granular) {
     // Haff's t0 of the Enskog gas at the initial temperature (sigma sqrt(m/kT0)), with the

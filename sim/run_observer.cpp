@@ -17,4 +17,8 @@ void RunObserver::observe(const Snapshot& s) {
   if (show_) progress_.update(s.time);
 }
 
+void RunObserver::request(tally::Requests& r) {
+  for (Observer* t : targets_) t->request(r);
+}
+
 }  // namespace hypergas::cli

@@ -19,6 +19,7 @@ class RunObserver final : public Observer {
   RunObserver(std::vector<Observer*> targets, const char* label, double end_time,
               bool show_progress = true);
   void observe(const Snapshot& s) override;
+  void request(tally::Requests& r) override;
 
   std::size_t snapshots() const { return count_; }
   /// Wall seconds spent in the targets (analysis), to subtract from the engine's time.
@@ -30,19 +31,6 @@ class RunObserver final : public Observer {
   bool show_;
   std::size_t count_ = 0;
   double analysis_s_ = 0.0;
-};
-
-/// Forwards snapshots to `targets` in order (the fine-grid observers of a run).
-class FanOut final : public Observer {
- public:
-  explicit FanOut(std::vector<Observer*> targets) : targets_(std::move(targets)) {}
-  void observe(const Snapshot& s) override {
-    for (Observer* t : targets_) t->observe(s);
-  }
-  bool empty() const { return targets_.empty(); }
-
- private:
-  std::vector<Observer*> targets_;
 };
 
 }  // namespace hypergas::cli

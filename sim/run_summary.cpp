@@ -8,6 +8,7 @@
 #include <fmt/core.h>
 
 #include "hypergas/registry.hpp"
+#include "version.hpp"
 
 namespace hypergas::cli {
 
@@ -32,12 +33,15 @@ analysis::JsonObject run_summary(const RunOptions& o, const RunFacts& f,
   };
   s.insert(s.end(), engine_keys.begin(), engine_keys.end());
   const analysis::JsonObject process{
+      {"setup_s", f.setup_s},
       {"engine_s", st.engine_s},
       {"analysis_s", st.analysis_s},
       {"engine_bytes_per_particle", f.engine_bytes_per_particle},
       {"peak_rss_bytes_per_particle", peak_rss_bytes() / static_cast<double>(o.n)},
       {"checkpoints", static_cast<std::int64_t>(st.checkpoints)},
       {"resumes", static_cast<std::int64_t>(st.resumes)},
+      {"version", std::string(version())},
+      {"git", std::string(git_describe())},
   };
   s.insert(s.end(), process.begin(), process.end());
   return s;

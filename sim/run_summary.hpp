@@ -25,6 +25,7 @@ struct RunFacts {
   double every = 0.0;               ///< the sampling interval
   double fraction = 0.0;            ///< fraction of species 2 (0: one species)
   double engine_bytes_per_particle = 0.0;
+  double setup_s = 0.0;             ///< wall time before the first collision (start, set-up)
 };
 
 /// The summary of a run: the contract's keys (dim, engine, model, n, seed, collisions,

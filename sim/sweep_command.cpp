@@ -12,6 +12,7 @@
 // `hypergas sweep --resume DIR` (or the same command): finished cases are kept, the others
 // continue from their checkpoints or start again, and since every case is a deterministic
 // run, the files are those of a sweep never stopped.
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <filesystem>
 #include <fstream>

@@ -24,7 +24,7 @@ using detail::running_integral;
 enum Group : int {
   stress_total, stress_kinetic, stress_collisional,
   heat_total, heat_kinetic, heat_collisional,
-  stress_point, heat_point, velocity, displacement, n_groups
+  stress_point, heat_point, velocity, displacement
 };
 
 /// The shortest cut of the stress and heat-flux integrals (mean free times).
@@ -107,10 +107,16 @@ void HelfandRecorder::install(const Snapshot& s) {
   corr_ = std::make_unique<BlockCorrelator>(layout(dim_, tagged_.size()), lags, planned,
                                             set_.error_blocks);
   frame_.assign(std::size_t(corr_->series()), 0.0);
-  s.contacts->helfand = std::make_unique<tally::Helfand>(dim_, s.time, h_, s.velocities, n_,
-                                                         s.stride, tagged_);
+  tally_ = std::make_shared<tally::Helfand>(dim_, s.time, h_, s.velocities, n_, s.stride,
+                                            tagged_);
   t_first_ = s.time;
   coll_first_ = s.collisions;
+}
+
+void HelfandRecorder::request(tally::Requests& r) {
+  if (!tally_ || installed_) return;
+  r.set_helfand(tally_);
+  installed_ = true;
 }
 
 void HelfandRecorder::observe(const Snapshot& s) {
@@ -122,11 +128,14 @@ void HelfandRecorder::observe(const Snapshot& s) {
     throw InvalidInput("helfand: one species of unit mass only (no --mass-ratio)");
   if (!s.contacts || !(s.box > 0.0))
     throw InvalidInput("helfand: the engine keeps no Helfand tally (EDMD only)");
-  if (!s.contacts->helfand) {
-    if (corr_) throw InvalidInput("helfand: the engine lost its tally (a restored engine?)");
+  if (!tally_) {
     install(s);
+  } else if (s.contacts->helfand != tally_) {
+    throw InvalidInput(
+        "helfand: the engine does not hold the recorder's tally (a restored engine, or an "
+        "observer in between that does not forward request)");
   }
-  tally::Helfand& H = *s.contacts->helfand;
+  tally::Helfand& H = *tally_;
   H.close_until(s.time);
   const std::vector<double>& rec = H.records();
   const int d = dim_, S = H.stress_components();

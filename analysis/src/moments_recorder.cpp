@@ -213,6 +213,8 @@ void MomentsRecorder::derive_tables() {
 }
 
 void MomentsRecorder::observe(const Snapshot& s) {
+  ask_ = false;  // a request not taken by the engine is for an old snapshot: never sent
+  pending_.reset();
   validate(s);
   if (s.n < 2) throw InvalidInput("MomentsRecorder: need at least 2 particles");
   const int ns = s.species ? s.n_species : 1;
@@ -233,14 +235,14 @@ void MomentsRecorder::observe(const Snapshot& s) {
                     s.inv_mass == nullptr && same_masses(s, cfg_.layout);
   if (fits && kept && kept->layout() == cfg_.layout &&
       kept->count(-1) == static_cast<std::int64_t>(s.n) && record(s, *kept)) {
-    if (!keep) s.tally->tally.reset();
+    if (!keep) ask(std::nullopt);
     return;
   }
   if (fits) {
     tally::Tally t = pass(s);
     ++passes_;
     if (record(s, t)) {
-      if (s.tally) s.tally->tally = keep ? std::make_unique<tally::Tally>(std::move(t)) : nullptr;
+      if (s.tally) ask(keep ? std::optional(std::move(t)) : std::nullopt);
       return;
     }
   }
@@ -249,7 +251,19 @@ void MomentsRecorder::observe(const Snapshot& s) {
   ++passes_;
   if (!record(s, t))
     throw InvalidInput("MomentsRecorder: the snapshot's temperature is not reproducible");
-  if (s.tally) s.tally->tally = keep ? std::make_unique<tally::Tally>(std::move(t)) : nullptr;
+  if (s.tally) ask(keep ? std::optional(std::move(t)) : std::nullopt);
+}
+
+void MomentsRecorder::ask(std::optional<tally::Tally> t) {
+  ask_ = true;
+  pending_ = std::move(t);
+}
+
+void MomentsRecorder::request(tally::Requests& r) {
+  if (!ask_) return;
+  r.set_tally(pending_ ? std::make_unique<tally::Tally>(std::move(*pending_)) : nullptr);
+  ask_ = false;
+  pending_.reset();
 }
 
 bool MomentsRecorder::record(const Snapshot& s, const tally::Tally& t) {

@@ -64,6 +64,14 @@ std::vector<double> first_sonine(const CollisionLaw& law, int d) {
   return {eta, D * (D + 2.0) / (2.0 * (D - 1.0)) * eta, ds};
 }
 
+double converged_over_sonine(const CollisionLaw& law, int dim, const std::string& name) {
+  if (dim == 3 && !law.isotropic_scattering && law.exponent == 1.0) {
+    if (name == "viscosity") return 1.016034;
+    if (name == "thermal_conductivity") return 1.025218;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 TransportRecorder::TransportRecorder(const TransportSettings& s, int dim, std::size_t n,
                                      std::uint64_t frames, CollisionLaw law)
     : set_(s),
@@ -86,6 +94,9 @@ void TransportRecorder::observe(const Snapshot& s) {
     throw InvalidInput("transport: one species of unit mass only (no --mass-ratio)");
   if (!s.tally)
     throw InvalidInput("transport: the engine keeps no collision-level tally (DSMC only)");
+  if (pending_)
+    throw InvalidInput("transport: the engine did not install the fluxes asked for at the "
+                       "last sample (an observer in between must forward request)");
   const auto stride = static_cast<std::size_t>(s.stride);
   if (!s.tally->fluxes) {  // the first sample (or the first after a restore): from the state
     if (kT_ == 0.0) {
@@ -101,10 +112,10 @@ void TransportRecorder::observe(const Snapshot& s) {
     for (std::size_t i = 0; i < n_; ++i) f->add(s.velocities + i * stride, 1);
     std::vector<std::uint32_t> idx(tagged_.begin(), tagged_.end());
     f->tag(idx, n_, set_.seed);
-    s.tally->fluxes = std::move(f);
+    pending_ = std::move(f);
     last_x_.assign(tagged_.size() * std::size_t(dim_), 0.0);
   }
-  const tally::Fluxes& f = *s.tally->fluxes;
+  const tally::Fluxes& f = pending_ ? *pending_ : *s.tally->fluxes;
   const double sn = std::sqrt(static_cast<double>(n_));
   const double us = 1.0 / (sn * kT_), uq = 1.0 / (sn * kT_ * std::sqrt(kT_));
   const double uv = 1.0 / std::sqrt(kT_);
@@ -126,6 +137,10 @@ void TransportRecorder::observe(const Snapshot& s) {
       last = x;
     }
   corr_.push(frame_.data());
+}
+
+void TransportRecorder::request(tally::Requests& r) {
+  if (pending_) r.set_fluxes(std::move(pending_));
 }
 
 const std::vector<TransportCoefficient>& TransportRecorder::finish() {

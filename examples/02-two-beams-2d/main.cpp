@@ -52,15 +52,9 @@ int main(int argc, char** argv) {
   dsmc::Engine<2, dsmc::HardSpheres> gas(cfg);
   analysis::MomentsRecorder moments;
   DirectionalTemperature temps;
-  // Two observers, one callback: a tiny fan-out observer.
-  struct Both final : Observer {
-    Observer *a, *b;
-    Both(Observer* x, Observer* y) : a(x), b(y) {}
-    void observe(const Snapshot& s) override {
-      a->observe(s);
-      b->observe(s);
-    }
-  } both(&moments, &temps);
+  // Two observers, one callback: FanOut hands each snapshot (and each request for the
+  // engine's tally) to both.
+  FanOut both({&moments, &temps});
   gas.run_until(until, &both, every);
 
   const auto t = moments.column("time"), k = moments.column("kurtosis_x");

@@ -47,6 +47,63 @@ struct EngineTraits<edmd::Engine<D, F, S>> {
 template <class E>
 inline constexpr bool is_dsmc = EngineTraits<E>::dsmc;
 
+/// Every engine type that with_engine<D> reaches with the default scan list, as X(type), for
+/// a literal D: compiled once per D by the engines library (engines/instances.cpp.in, which
+/// checks this list against the registry's axes: detail::lists_every_engine) and declared extern
+/// to every file that links it (engines/extern.hpp.in), so the command's runs, the studies
+/// and the Python module share one compiled copy of each engine.
+#define HYPERGAS_ENGINE_TYPES(D, X)                                                         \
+  X(::hypergas::dsmc::Engine<D, ::hypergas::dsmc::HardSpheres, ::hypergas::Features{}>)     \
+  X(::hypergas::dsmc::Engine<D, ::hypergas::dsmc::HardSpheres,                              \
+                             ::hypergas::Features{.species = true}>)                        \
+  X(::hypergas::dsmc::Engine<D, ::hypergas::dsmc::MaxwellMolecules, ::hypergas::Features{}>) \
+  X(::hypergas::dsmc::Engine<D, ::hypergas::dsmc::MaxwellMolecules,                         \
+                             ::hypergas::Features{.species = true}>)                        \
+  X(::hypergas::dsmc::Engine<D, ::hypergas::dsmc::VariableHardSpheres,                      \
+                             ::hypergas::Features{}>)                                       \
+  X(::hypergas::dsmc::Engine<D, ::hypergas::dsmc::VariableHardSpheres,                      \
+                             ::hypergas::Features{.species = true}>)                        \
+  X(::hypergas::edmd::Engine<D, ::hypergas::Features{.positions = true},                    \
+                             ::hypergas::edmd::AutoScan<D>>)                                \
+  X(::hypergas::edmd::Engine<D, ::hypergas::Features{.positions = true, .species = true},   \
+                             ::hypergas::edmd::AutoScan<D>>)                                \
+  HYPERGAS_DENSE_ENGINES_##D(X)
+/// The EDMD engines of the dense regime where DenseScan<D> is not AutoScan<D> (edmd/scan.hpp).
+#define HYPERGAS_DENSE_ENGINES_1(X)
+#define HYPERGAS_DENSE_ENGINES_2(X)
+#define HYPERGAS_DENSE_ENGINES_3(X)                                                          \
+  X(::hypergas::edmd::Engine<3, ::hypergas::Features{.positions = true},                    \
+                             ::hypergas::edmd::DenseScan<3>>)                               \
+  X(::hypergas::edmd::Engine<3, ::hypergas::Features{.positions = true, .species = true},   \
+                             ::hypergas::edmd::DenseScan<3>>)
+#define HYPERGAS_DENSE_ENGINES_4(X)
+#define HYPERGAS_DENSE_ENGINES_5(X)
+#define HYPERGAS_DENSE_ENGINES_6(X)
+
+namespace detail {
+
+template <class T, class... Ts>
+constexpr bool listed(TypeList<Ts...>) {
+  return (std::is_same_v<T, Ts> || ...);
+}
+template <int D, class Listed, class M, class... Ss>
+constexpr bool dsmc_listed(TypeList<Ss...>) {
+  return (listed<DsmcEngine<D, M, Ss::value>>(Listed{}) && ...);
+}
+template <int D, class Listed, class S, class... Rs>
+constexpr bool edmd_listed(TypeList<Rs...>) {
+  return (listed<EdmdEngine<D, S::value, RegimeScan<Rs, D>>>(Listed{}) && ...);
+}
+/// Whether `Listed` holds every engine that with_engine<D> reaches with the default scan
+/// list (each model and species of DSMC; each species and density regime of EDMD).
+template <int D, class Listed, class... Ms, class... Ss>
+constexpr bool lists_every_engine(TypeList<Ms...>, TypeList<Ss...> species) {
+  return (dsmc_listed<D, Listed, Ms>(species) && ...) &&
+         (edmd_listed<D, Listed, Ss>(Regimes{}) && ...);
+}
+
+}  // namespace detail
+
 /// The one engine entry point: calls f(std::type_identity<Engine>{}) with the engine type
 /// that `c` names in dimension D (DSMC: model and species; EDMD: species and the scan, "auto"
 /// resolved by the density regime) and returns what f returns (the same type for every
@@ -89,3 +146,8 @@ decltype(auto) with_engine(const EngineChoice& c, F&& f) {
 }
 
 }  // namespace hypergas::registry
+
+// The engines compiled once by the engines library, declared extern where it is linked.
+#if __has_include("hypergas/engine_instances.hpp")
+#include "hypergas/engine_instances.hpp"
+#endif

@@ -5,13 +5,17 @@
 // and strides as runtime values, so the compiled analysis library reads any engine's state
 // without reaching into it. Observers are the only virtual interface on the data path and
 // are called once per sampling interval, never per collision. What an analysis needs per
-// collision it asks the engine to keep in a tally (hypergas/tally/tally.hpp), through
-// Snapshot::tally: the engine's collision-level observer.
+// collision it asks the engine to keep (a tally, collective fluxes, a Helfand tally) through
+// Observer::request, which the engine calls right after observe and applies before it moves
+// on: a snapshot is never written through, and what an observer wants from the engine is a
+// request, not a write into the engine.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "hypergas/particles.hpp"
 
@@ -20,6 +24,7 @@ namespace hypergas {
 namespace tally {
 struct Slot;
 struct ContactSlot;
+struct Requests;
 }
 
 /// A read-only view of the particles at one instant. Arrays are valid only during the
@@ -37,15 +42,21 @@ struct Snapshot {
   const std::uint8_t* species = nullptr;     ///< per-particle species, or nullptr (one species)
   const double* species_inv_mass = nullptr;  ///< inverse mass per species (with `species`)
   int n_species = 1;
-  /// The engine's tally slot (engines that keep one: DSMC), or nullptr. An observer may
-  /// install a tally built from this snapshot; the engine then applies every later
-  /// collision to it (tally/tally.hpp).
-  tally::Slot* tally = nullptr;
-  /// The EDMD engine's slot for a Helfand tally (tally/helfand.hpp), or nullptr: an
-  /// observer may install one, which every later collision then updates.
-  tally::ContactSlot* contacts = nullptr;
+  /// What the engine keeps per collision (engines that keep a tally: DSMC), or nullptr. An
+  /// observer asks for a tally or fluxes in Observer::request; the engine then applies every
+  /// later collision to them (tally/tally.hpp).
+  const tally::Slot* tally = nullptr;
+  /// The EDMD engine's Helfand slot (tally/helfand.hpp), or nullptr: an observer asks for a
+  /// Helfand tally in Observer::request, which every later collision then updates.
+  const tally::ContactSlot* contacts = nullptr;
   /// Side of the periodic box (length units), or 0 (velocity space).
   double box = 0.0;
+  /// EDMD: the engine's measurement window (pressure_Z, collision_rate): its start time, the
+  /// collision virial sum r_ij . dp_i and the collisions since then; NaN and 0 elsewhere.
+  /// Two snapshots of one window give Z and the collision rate between them.
+  double window_start = std::numeric_limits<double>::quiet_NaN();
+  double window_virial = std::numeric_limits<double>::quiet_NaN();
+  std::uint64_t window_collisions = 0;
   /// The velocities are the true ones divided by exp(log_velocity_scale): a freely cooling
   /// granular gas in the DSMC engine keeps them at its initial temperature
   /// (dsmc/granular.hpp); 0 for every other state.
@@ -67,6 +78,26 @@ class Observer {
  public:
   virtual ~Observer() = default;
   virtual void observe(const Snapshot& s) = 0;
+  /// Called by the engine right after observe(s): adds to `r` what this observer wants the
+  /// engine to keep from now on (tally/tally.hpp: Requests); the engine applies `r` once
+  /// every observer of the snapshot has returned. Asks for nothing by default.
+  virtual void request(tally::Requests& r) { (void)r; }
+};
+
+/// Hands each snapshot, and then each request, to `targets` in order.
+class FanOut final : public Observer {
+ public:
+  explicit FanOut(std::vector<Observer*> targets) : targets_(std::move(targets)) {}
+  void observe(const Snapshot& s) override {
+    for (Observer* t : targets_) t->observe(s);
+  }
+  void request(tally::Requests& r) override {
+    for (Observer* t : targets_) t->request(r);
+  }
+  bool empty() const { return targets_.empty(); }
+
+ private:
+  std::vector<Observer*> targets_;
 };
 
 /// Builds the velocity part of a snapshot of `p` (positions, time and counters are the

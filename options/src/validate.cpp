@@ -18,7 +18,7 @@
 namespace hypergas::options {
 
 namespace {
-[[noreturn]] void bad(const std::string& msg) { throw InvalidInput(msg); }
+[[noreturn]] void reject(const std::string& msg) { throw InvalidInput(msg); }
 
 /// Refuses a particle number whose state would not fit in this machine's memory.
 void check_memory(long long n, int dim, bool edmd) {
@@ -31,7 +31,7 @@ void check_memory(long long n, int dim, bool edmd) {
   if (pages <= 0 || page <= 0) return;
   const double have = static_cast<double>(pages) * static_cast<double>(page);
   if (need > have)
-    bad(fmt::format("--n {} needs about {:.3g} GB of memory for the {} state; this machine has "
+    reject(fmt::format("--n {} needs about {:.3g} GB of memory for the {} state; this machine has "
                     "{:.3g} GB",
                     n, need / 1e9, edmd ? "edmd" : "dsmc", have / 1e9));
 }
@@ -48,7 +48,7 @@ T parse_number(const std::string& option, const std::string& text) {
   const char* b = text.data();
   const char* e = b + text.size();
   const auto fail = [&](const char* what) -> T {
-    bad(fmt::format("{} must be {}, got '{}'", option, what, text));
+    reject(fmt::format("{} must be {}, got '{}'", option, what, text));
   };
   if constexpr (std::is_floating_point_v<T>) {
     T x{};
@@ -87,39 +87,39 @@ double parse_duration(const std::string& option, const std::string& text) {
   try {
     x = std::stod(text, &pos);
   } catch (const std::exception&) {
-    bad(fmt::format("{} must be a duration such as 90s, 10min or 2h, got '{}'", option, text));
+    reject(fmt::format("{} must be a duration such as 90s, 10min or 2h, got '{}'", option, text));
   }
   const std::string unit = text.substr(pos);
   double f = 0.0;
   if (unit.empty() || unit == "s") f = 1.0;
   else if (unit == "min" || unit == "m") f = 60.0;
   else if (unit == "h") f = 3600.0;
-  else bad(fmt::format("{}: unknown unit '{}' in '{}' (use s, min or h)", option, unit, text));
+  else reject(fmt::format("{}: unknown unit '{}' in '{}' (use s, min or h)", option, unit, text));
   if (!(std::isfinite(x) && x > 0.0 && x * f <= 1e9))
-    bad(fmt::format("{} must be a duration > 0 and at most 1e9 s, got '{}'", option, text));
+    reject(fmt::format("{} must be a duration > 0 and at most 1e9 s, got '{}'", option, text));
   return x * f;
 }
 
 void check_dim(int d, const std::string& option) {
   if (d < min_dim || d > max_dim)
-    bad(fmt::format("{} must be {}, got {}", option, entry("dim").range.must, d));
+    reject(fmt::format("{} must be {}, got {}", option, entry("dim").range.must, d));
 }
 
 void check_n(long long n, const std::string& option) {
   const Range& r = entry("n").range;
   if (static_cast<double>(n) < r.lo || static_cast<double>(n) > r.hi)
-    bad(fmt::format("{} must be {}, got {}", option, r.must, n));
+    reject(fmt::format("{} must be {}, got {}", option, r.must, n));
 }
 
 void check_threads(long long t, const std::string& option) {
   const Range& r = entry("threads").range;
   if (static_cast<double>(t) < r.lo || static_cast<double>(t) > r.hi)
-    bad(fmt::format("{} must be {}, got {}", option, r.must, t));
+    reject(fmt::format("{} must be {}, got {}", option, r.must, t));
 }
 
 void check_start_packing(double start, double packing) {
   if (!(std::isfinite(start) && start > 0.0 && start <= packing))
-    bad(fmt::format("--start-packing must be > 0 and at most --packing {}, got {}", packing,
+    reject(fmt::format("--start-packing must be > 0 and at most --packing {}, got {}", packing,
                     start));
 }
 
@@ -145,57 +145,76 @@ namespace {
 void validate_granular(const RunOptions& o) {
   const bool driven = drive_kind(o.drive) != dsmc::Drive::none;
   if (driven && o.restitution == 1.0)
-    bad("--drive white-noise needs --restitution < 1 (an elastic gas driven by noise heats "
+    reject("--drive white-noise needs --restitution < 1 (an elastic gas driven by noise heats "
         "without bound)");
   if (driven && o.dim < 2)
-    bad("--drive white-noise needs --dim >= 2 (its strength comes from the Sonine theory of "
+    reject("--drive white-noise needs --dim >= 2 (its strength comes from the Sonine theory of "
         "D >= 2)");
   if (driven && !registry::model_traits(o.model, o.vhs_exponent).supports_drive)
-    bad(fmt::format("--drive white-noise is defined for --model {} only, not --model {}",
+    reject(fmt::format("--drive white-noise is defined for --model {} only, not --model {}",
                     dsmc::HardSpheres::name, o.model));
   if (!driven && o.was_given("--drive-dt"))
-    bad("--drive-dt applies with --drive white-noise only");
+    reject("--drive-dt applies with --drive white-noise only");
   if (o.restitution == 1.0 && o.was_given("--tc-time"))
-    bad("--tc-time applies with --restitution < 1 only");
+    reject("--tc-time applies with --restitution < 1 only");
   if (o.restitution != 1.0 && o.structure)
-    bad("--structure measures the elastic fluid at equilibrium: leave out --restitution");
+    reject("--structure measures the elastic fluid at equilibrium: leave out --restitution");
 }
 
 void validate_transport(const RunOptions& o) {
   if (!o.transport) {
     for (const char* k : {"--correlation-dt", "--correlation-time", "--tagged"})
-      if (o.was_given(k)) bad(fmt::format("{} applies with --transport only", k));
+      if (o.was_given(k)) reject(fmt::format("{} applies with --transport only", k));
     return;
   }
   if (o.dim < 2)
-    bad("--transport needs --dim >= 2: in D = 1 equal masses only swap velocities, so no "
+    reject("--transport needs --dim >= 2: in D = 1 equal masses only swap velocities, so no "
         "flux relaxes");
   if (o.restitution != 1.0)
-    bad("--transport measures the elastic gas at equilibrium: leave out --restitution");
-  if (two_species(o)) bad("--transport measures a one-species gas: leave out --mass-ratio");
+    reject("--transport measures the elastic gas at equilibrium: leave out --restitution");
+  if (two_species(o)) reject("--transport measures a one-species gas: leave out --mass-ratio");
   if (o.n < 100)
-    bad(fmt::format("--transport needs --n >= 100 (its 1/N corrections grow below), got {}",
+    reject(fmt::format("--transport needs --n >= 100 (its 1/N corrections grow below), got {}",
                     o.n));
-  if (o.replicas != 1) bad("--transport needs --replicas 1");
+  if (o.replicas != 1) reject("--transport needs --replicas 1");
   if (o.checkpoint_every > 0.0 || !o.checkpoint_wall.empty())
-    bad("--transport runs cannot be checkpointed: leave out --checkpoint-every and "
+    reject("--transport runs cannot be checkpointed: leave out --checkpoint-every and "
         "--checkpoint-wall");
   if (o.correlation_time < 4.0 * o.correlation_dt)
-    bad(fmt::format("--correlation-time {} must be at least 4 --correlation-dt ({})",
+    reject(fmt::format("--correlation-time {} must be at least 4 --correlation-dt ({})",
                     o.correlation_time, o.correlation_dt));
   // EDMD: the grid is in mean free times, measured in the equilibration, so the run's
   // length in them is checked when the recording starts (HelfandRecorder)
   if (o.engine_kind() == registry::EngineKind::edmd) return;
   const double span = o.until - transport_warmup;
   if (span < 10.0 * o.correlation_time)
-    bad(fmt::format("--transport samples from t = {} on and needs --until >= {} + 10 "
+    reject(fmt::format("--transport samples from t = {} on and needs --until >= {} + 10 "
                     "--correlation-time = {} (ten correlation windows), got {}",
                     transport_warmup, transport_warmup,
                     transport_warmup + 10.0 * o.correlation_time, o.until));
   if (span / o.correlation_dt > 1e9)
-    bad(fmt::format("--transport: (--until - {}) / --correlation-dt = {:.3g} samples; at most "
+    reject(fmt::format("--transport: (--until - {}) / --correlation-dt = {:.3g} samples; at most "
                     "1e9",
                     transport_warmup, span / o.correlation_dt));
+}
+}  // namespace
+
+namespace {
+/// Combinations that run but mean nothing: refused with what would.
+void validate_physics(const RunOptions& o) {
+  if (o.was_given("--fraction") && o.mass_ratio == 1.0)
+    reject("--fraction is the share of the second mass: it needs --mass-ratio other than 1");
+  if (o.engine_kind() != registry::EngineKind::dsmc) return;
+  if (o.init == "bkw" && o.model != dsmc::MaxwellMolecules::name)
+    reject(fmt::format("--init bkw is the exact solution for Maxwell molecules only: add "
+                       "--model {} (not {})",
+                       dsmc::MaxwellMolecules::name, o.model));
+  // an elastic collision of two equal masses in 1D exchanges their velocities: the set of
+  // velocities, and so every measured distribution, never changes
+  if (o.dim == 1 && o.mass_ratio == 1.0 && o.restitution == 1.0 &&
+      drive_kind(o.drive) == dsmc::Drive::none)
+    reject("--dim 1 with one mass: an elastic collision only swaps two velocities, so the gas "
+           "never relaxes; give --mass-ratio (e.g. 3)");
 }
 }  // namespace
 
@@ -205,39 +224,40 @@ void validate(const RunOptions& o) {
   // Each option's own range was checked when it was set; here what involves several.
   for (const Option& opt : run_table())
     if (!applies(opt, e) && o.was_given(cli_name(opt)))
-      bad(fmt::format("{} applies to --engine {} only, not to --engine {}", cli_name(opt),
+      reject(fmt::format("{} applies to --engine {} only, not to --engine {}", cli_name(opt),
                       edmd ? "dsmc" : "edmd", o.engine));
   if (o.was_given("--vhs-exponent") && o.model != dsmc::VariableHardSpheres::name)
-    bad(fmt::format("--vhs-exponent applies to --model {} only, not to --model {}",
+    reject(fmt::format("--vhs-exponent applies to --model {} only, not to --model {}",
                     dsmc::VariableHardSpheres::name, o.model));
   try {
     (void)o.schedule(0.0);
   } catch (const InvalidInput&) {
-    bad(fmt::format("--until / --every = {:.3g} samples; at most 1e6 (each is a row of "
+    reject(fmt::format("--until / --every = {:.3g} samples; at most 1e6 (each is a row of "
                     "moments.csv)",
                     o.until / o.every));
   }
   if ((o.checkpoint_every > 0.0 || !o.checkpoint_wall.empty()) && o.replicas != 1)
-    bad("--checkpoint-every and --checkpoint-wall need --replicas 1 (one system)");
+    reject("--checkpoint-every and --checkpoint-wall need --replicas 1 (one system)");
   validate_transport(o);
   validate_granular(o);
+  validate_physics(o);
   if (!o.structure)
     for (const char* k : {"--rdf-max", "--k-max"})
-      if (o.was_given(k)) bad(fmt::format("{} applies with --structure only", k));
+      if (o.was_given(k)) reject(fmt::format("{} applies with --structure only", k));
   if (o.structure && (o.checkpoint_every > 0.0 || !o.checkpoint_wall.empty()))
-    bad("--structure runs cannot be checkpointed: leave out --checkpoint-every and "
+    reject("--structure runs cannot be checkpointed: leave out --checkpoint-every and "
         "--checkpoint-wall");
   if (edmd) {
     const double jam = jamming_packing(o.dim);
     if (o.packing >= jam)
-      bad(fmt::format("--packing {} is at or above the jamming density {} of hard spheres in "
+      reject(fmt::format("--packing {} is at or above the jamming density {} of hard spheres in "
                       "D = {}",
                       o.packing, jam, o.dim));
     if (o.was_given("--start-packing")) check_start_packing(o.start_packing, o.packing);
     // 1D: the collision rate grows as 1 / (1 - eta) (N = 30 in t = 0.5: 835, 8493, 84933
     // collisions at eta = 0.99, 0.999, 0.9999), so a run near 1 never ends.
     if (o.dim == 1 && o.packing > 0.99)
-      bad(fmt::format("--packing {} in D = 1: at most 0.99 (the collision rate grows as "
+      reject(fmt::format("--packing {} in D = 1: at most 0.99 (the collision rate grows as "
                       "1 / (1 - packing))",
                       o.packing));
   }
@@ -293,7 +313,7 @@ registry::EngineChoice engine_choice(const RunOptions& o) {
 dsmc::Drive drive_kind(std::string_view name) {
   if (name == "none") return dsmc::Drive::none;
   if (name == "white-noise") return dsmc::Drive::white_noise;
-  bad(fmt::format("unknown drive '{}': none or white-noise", name));
+  reject(fmt::format("unknown drive '{}': none or white-noise", name));
 }
 
 std::string_view drive_name(dsmc::Drive d) {

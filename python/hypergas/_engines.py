@@ -198,7 +198,7 @@ class DSMC(_Engine):
             raise TypeError(f"scheme must be a string, got {type(scheme).__name__}")
         dt = _time_argument("dt", dt)
         self = cls.__new__(cls)
-        bound = DSMC.from_velocities.__func__.__signature__.bind(None, velocities, **kwargs)
+        bound = _bind(DSMC.from_velocities.__func__.__signature__, None, velocities, **kwargs)
         given = {k: v for k, v in bound.arguments.items()
                  if k not in ("cls", "velocities") and v is not None}
         _Engine.__init__(self, _hypergas.make_dsmc_from(
@@ -411,9 +411,22 @@ def _doc(kind):
     return "\n".join(lines) + "\n"
 
 
+def _bind(signature, *args, **kwargs):
+    """signature.bind(...), naming the nearest keyword when one is unknown (the command's
+    "did you mean" rule)."""
+    try:
+        return signature.bind(*args, **kwargs)
+    except TypeError as e:
+        unknown = [k for k in kwargs if k not in signature.parameters]
+        if not unknown:
+            raise
+        hint = _hypergas.did_you_mean(unknown[0], list(signature.parameters)[1:])
+        raise TypeError(f"unexpected keyword argument '{unknown[0]}'{hint}") from None
+
+
 def _given(cls, args, kwargs):
     """The arguments the caller gave (by position or keyword), as keywords."""
-    bound = cls.__init__.__signature__.bind(None, *args, **kwargs)
+    bound = _bind(cls.__init__.__signature__, None, *args, **kwargs)
     return {k: v for k, v in bound.arguments.items()
             if k not in ("self", "scheme", "dt") and v is not None}
 

@@ -8,6 +8,7 @@
 
 #include "convert.hpp"
 #include "hypergas/options/from_given.hpp"
+#include "hypergas/options/suggest.hpp"
 #include "hypergas/schedule.hpp"
 
 namespace hypergas::python {
@@ -58,7 +59,7 @@ options::RunOptions run_options(registry::EngineKind kind, const py::kwargs& kw,
     for (const auto& [key, value] : kw) {
       const std::string k = py::str(key);
       if (std::find(allowed.begin(), allowed.end(), k) == allowed.end())
-        type_error("unexpected keyword argument '" + k + "'");
+        type_error("unexpected keyword argument '" + k + "'" + options::did_you_mean(k, allowed));
       if (value.is_none()) continue;  // not given: the default
       set_value(o, *options::find(k), value);
     }
@@ -66,6 +67,12 @@ options::RunOptions run_options(registry::EngineKind kind, const py::kwargs& kw,
 }
 
 void bind_options(py::module_& m) {
+  m.def("did_you_mean",
+        [](const std::string& name, const std::vector<std::string>& candidates) {
+          return options::did_you_mean(name, candidates);
+        },
+        "\"; did you mean 'X'?\" for the candidate nearest a misspelt name, or \"\" "
+        "(the command's rule, hypergas/options/suggest.hpp).");
   m.def("option_table", [] {
     py::list rows;
     const options::RunOptions d = options::defaults(registry::EngineKind::dsmc);

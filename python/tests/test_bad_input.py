@@ -63,6 +63,8 @@ def test_dsmc_bad_types(kwargs):
 
 
 def test_unknown_keyword():
+    with pytest.raises(TypeError, match="did you mean 'restitution'"):
+        hg.DSMC(restitutoin=0.5)  # a slip of the fingers: the nearest keyword is named
     with pytest.raises(TypeError):
         hg.DSMC(packing=0.1)  # an EDMD option
     with pytest.raises(TypeError):

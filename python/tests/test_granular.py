@@ -59,8 +59,8 @@ def test_dsmc_hcs_a2_and_haff_law(dim, alpha):
 
 
 def test_dsmc_restitution_one_is_the_elastic_engine():
-    a = hg.DSMC(dim=3, n=5000, seed=8, init="bkw")
-    b = hg.DSMC(dim=3, n=5000, seed=8, init="bkw", restitution=1.0)
+    a = hg.DSMC(dim=3, n=5000, seed=8, init="bkw", model="maxwell")
+    b = hg.DSMC(dim=3, n=5000, seed=8, init="bkw", model="maxwell", restitution=1.0)
     a.run(3.0)
     b.run(3.0)
     np.testing.assert_array_equal(a.velocities, b.velocities)

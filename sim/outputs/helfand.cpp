@@ -3,6 +3,7 @@
 // Einstein-Helfand and Green-Kubo (analysis::HelfandRecorder, kept collision by collision
 // over the measurement window), over first Sonine and Enskog.
 #include <optional>
+#include <string>
 
 #include <fmt/core.h>
 
@@ -14,6 +15,13 @@
 namespace hypergas::cli {
 
 namespace {
+
+/// The coefficient a reported part belongs to: viscosity_cross -> viscosity.
+std::string whole_coefficient(const std::string& part) {
+  for (const char* w : {"thermal_conductivity", "self_diffusion", "viscosity"})
+    if (part.rfind(w, 0) == 0) return w;
+  return part;
+}
 
 class HelfandOutput final : public Output {
  public:
@@ -41,12 +49,14 @@ class HelfandOutput final : public Output {
     }
   }
   void report(std::string& text, const analysis::JsonObject&) const override {
+    // a part (kinetic, cross, collisional) over the dilute gas's whole first Sonine
+    // coefficient, and over Enskog's value of the same part
     for (const auto& c : recorder_->finish())
       text += fmt::format(
-          "  {} {:.5g} +- {:.2g}, over first Sonine {:.5f} +- {:.5f}, over Enskog "
-          "{:.5f} +- {:.5f}\n",
-          c.name, c.value, c.error, c.ratio, c.ratio_error, c.enskog_ratio,
-          c.enskog_ratio_error);
+          "  {} {:.5g} +- {:.2g} (units sigma, m, kT); over the dilute first Sonine {} "
+          "{:.5f} +- {:.5f}; over Enskog's {} {:.5f} +- {:.5f}\n",
+          c.name, c.value, c.error, whole_coefficient(c.name), c.ratio, c.ratio_error, c.name,
+          c.enskog_ratio, c.enskog_ratio_error);
   }
   std::string_view plot() const override { return embedded::plot_transport_edmd_gp; }
 

@@ -1,21 +1,26 @@
 // sim/outputs/list.cpp -- the outputs a run can have, in order (output.hpp). An output's
 // file defines its OutputKind; its one line here makes runs use it.
 #include <array>
+#include <cmath>
+
+#include <fmt/core.h>
 
 #include "moments.hpp"
 #include "output.hpp"
+#include "../run_summary.hpp"
 #include "plot_run_gp.hpp"  // generated from scripts/plot_run.gp
 
 namespace hypergas::cli {
 
 namespace outputs {
-extern const OutputKind vacf, transport, helfand, structure;
+extern const OutputKind vacf, pressure, transport, helfand, structure;
 }
 
 namespace {
-const std::array<const OutputKind*, 5> kinds = {
+const std::array<const OutputKind*, 6> kinds = {
     &outputs::moments,    // moments.csv, speed_histogram.csv
     &outputs::vacf,       // vacf.csv (EDMD)
+    &outputs::pressure,   // Z_error, collision_rate_error (elastic EDMD)
     &outputs::transport,  // transport.csv, correlations.csv (DSMC --transport)
     &outputs::helfand,    // transport.csv, correlations.csv (EDMD --transport)
     &outputs::structure,  // rdf.csv, structure_factor.csv (EDMD --structure)
@@ -29,8 +34,31 @@ std::vector<std::unique_ptr<Output>> make_outputs(const RunSetup& setup) {
   return out;
 }
 
-std::string plot_script(const std::vector<std::unique_ptr<Output>>& outputs) {
-  std::string script(embedded::plot_run_gp);
+std::string plot_script(const std::vector<std::unique_ptr<Output>>& outputs,
+                        const analysis::JsonObject& summary) {
+  const auto text = [&](const char* k) { return summary_field(summary, k); };
+  const auto number = [&](const char* k) { return summary_number(summary, k); };
+  const bool edmd = text("engine") == "edmd";
+  std::string script = fmt::format("run_title = \"{}, D = {}, N = {}, {}, seed {}\"\n",
+                                   text("engine"), text("dim"), text("n"), text("model"),
+                                   text("seed"));
+  const double alpha = number("restitution");
+  const bool granular = std::isfinite(alpha) && alpha < 1.0;
+  script += fmt::format("granular = {}\n", granular ? 1 : 0);
+  if (granular) {
+    // Haff's law from theory where the summary has it (DSMC first Sonine, EDMD Enskog),
+    // else the fitted t0; EDMD cools from the end of its elastic equilibration
+    double t0 = number(edmd ? "haff_t0_enskog" : "haff_t0_sonine");
+    if (!std::isfinite(t0)) t0 = number("haff_t0");
+    const double from = edmd ? number("equilibration_time") : 0.0;
+    script += fmt::format(
+        "time_unit = \"{}\"\nhaff_from = {:.17g}\nhaff_t0 = {}\na2_sonine = {}\n",
+        edmd ? "sigma sqrt(m/kT0)" : "mean collision times at T0", from,
+        std::isfinite(t0) ? fmt::format("{:.17g}", t0) : "NaN",
+        std::isfinite(number("a2_sonine")) ? fmt::format("{:.17g}", number("a2_sonine"))
+                                           : "NaN");
+  }
+  script += embedded::plot_run_gp;
   for (const auto& o : outputs) script += o->plot();
   return script;
 }

@@ -82,8 +82,12 @@ std::unique_ptr<Output> make_output(const RunSetup& s) {
 /// checkpoint sections, files, summary keys, text lines and plots.
 std::vector<std::unique_ptr<Output>> make_outputs(const RunSetup& setup);
 
-/// The gnuplot script of a run folder: scripts/plot_run.gp and each output's piece.
-std::string plot_script(const std::vector<std::unique_ptr<Output>>& outputs);
+/// The gnuplot script of a run folder (written as plot.gp beside the PNGs): the run's
+/// variables from its summary (run_title "dsmc, D = 3, N = 1000, hs, seed 1"; granular and,
+/// for a cooling gas, time_unit, haff_from, haff_t0, a2_sonine), scripts/plot_run.gp and
+/// each output's piece.
+std::string plot_script(const std::vector<std::unique_ptr<Output>>& outputs,
+                        const analysis::JsonObject& summary);
 
 /// Whether a run with options `o` can be checkpointed: one system (no replicas), and a
 /// checkpoint can hold every output it has.

@@ -42,8 +42,9 @@ class TransportOutput final : public Output {
     ts.warmup = options::transport_warmup;
     ts.seed = o.seed;
     const registry::ModelTraits m = registry::model_traits(o.model, o.vhs_exponent);
-    recorder_.emplace(ts, o.dim, static_cast<std::size_t>(o.n), frames,
-                      analysis::CollisionLaw{m.exponent, m.isotropic_scattering});
+    law_ = analysis::CollisionLaw{m.exponent, m.isotropic_scattering};
+    dim_ = o.dim;
+    recorder_.emplace(ts, o.dim, static_cast<std::size_t>(o.n), frames, law_);
   }
 
   Observer* fine() override { return &*recorder_; }
@@ -63,16 +64,27 @@ class TransportOutput final : public Output {
     }
   }
   void report(std::string& text, const analysis::JsonObject&) const override {
-    for (const auto& c : recorder_->finish())
+    // reduced: eta / (n kT tau), lambda / (n k (kT/m) tau), D_s / ((kT/m) tau)
+    for (const auto& c : recorder_->finish()) {
       text += fmt::format(
-          "  {} {:.5g} +- {:.2g} (reduced), first Sonine {:.5g}, ratio {:.5f} +- {:.5f}\n",
+          "  {} {:.5g} +- {:.2g} (reduced by n, kT, m and the mean collision time); first "
+          "Sonine {:.5g}: ratio {:.5f} +- {:.5f}",
           c.name, c.value, c.error, c.sonine, c.ratio, c.ratio_error);
+      const double conv = analysis::converged_over_sonine(law_, dim_, c.name);
+      if (std::isfinite(conv))
+        text += fmt::format("; converged Chapman-Enskog (Pekeris-Alterman) {:.5g}: ratio "
+                            "{:.5f} +- {:.5f}",
+                            conv * c.sonine, c.ratio / conv, c.ratio_error / conv);
+      text += "\n";
+    }
   }
   std::string_view plot() const override { return embedded::plot_transport_dsmc_gp; }
 
  private:
   // finish() caches its result, so the const accessors above may call it
   mutable std::optional<analysis::TransportRecorder> recorder_;
+  analysis::CollisionLaw law_;
+  int dim_ = 0;
 };
 
 }  // namespace

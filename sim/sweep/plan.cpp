@@ -11,6 +11,7 @@
 
 #include "hypergas/error.hpp"
 #include "hypergas/options/from_given.hpp"
+#include "hypergas/options/suggest.hpp"
 #include "hypergas/studies/replicas.hpp"
 #include "../outputs/output.hpp"
 
@@ -42,7 +43,13 @@ const options::Option& option_of(const std::string& key, const std::string& at) 
   const options::Option* opt = options::find(key);
   if (!opt || options::python_name(*opt) != key) {
     std::string hint;
-    if (opt) hint = fmt::format(" (write it {})", options::python_name(*opt));
+    if (opt) {
+      hint = fmt::format(" (write it {})", options::python_name(*opt));
+    } else {
+      std::vector<std::string> keys{"replicas", "plot", "plot_x"};
+      for (const options::Option& o : options::run_table()) keys.push_back(options::python_name(o));
+      hint = options::did_you_mean(key, keys);
+    }
     bad(fmt::format("{}: unknown option '{}'{}; a plan's keys are `hypergas run` options in "
                     "their Python spelling, and [sweep] also takes replicas, plot and plot_x",
                     at, key, hint));

@@ -23,7 +23,8 @@ namespace {
 /// Summary fields that measure the process, not the physics: never in the tables.
 const std::set<std::string> process_fields = {
     "wall_s",      "collisions_per_s", "engine_s",  "analysis_s",
-    "output_s",    "checkpoints",      "resumes",   "peak_rss_bytes_per_particle"};
+    "output_s",    "checkpoints",      "resumes",   "peak_rss_bytes_per_particle",
+    "setup_s"};
 
 /// Decodes a JSON string literal (with its quotes) to its text.
 std::string unquote(const std::string& j) {
@@ -185,20 +186,20 @@ std::vector<std::string> Tables::fields() const {
 void Tables::write() const {
   const std::vector<std::string> cols = fields();
   std::string head = "case";
-  for (const Swept& s : plan_.swept) head += "," + column(s);
+  for (const Swept& s : plan_.swept) head.append(",").append(column(s));
   head += ",replica,seed";
   std::string csv = head;
-  for (const auto& c : cols) csv += "," + c;
+  for (const auto& c : cols) csv.append(",").append(c);
   csv += "\n";
   for (std::size_t i = 0; i < cases_.size(); ++i) {
     if (!rows_[i]) continue;
     const Case& c = cases_[i];
     csv += c.id;
-    for (const std::string& v : c.values) csv += "," + csv_text(v);
+    for (const std::string& v : c.values) csv.append(",").append(csv_text(v));
     csv += fmt::format(",{},{}", c.replica, c.options.seed);
     for (const auto& k : cols) {
       const std::string* v = lookup(*rows_[i], k);
-      csv += "," + (v ? csv_field(*v) : std::string());
+      csv.append(",").append(v ? csv_field(*v) : std::string());
     }
     csv += "\n";
   }
@@ -220,7 +221,7 @@ void Tables::write() const {
     if (any && all) numeric.push_back(k);
   }
   std::string g = "group";
-  for (const Swept& s : plan_.swept) g += "," + column(s);
+  for (const Swept& s : plan_.swept) g.append(",").append(column(s));
   g += ",replicas";
   for (const auto& k : numeric) g += fmt::format(",{}_mean,{}_se", k, k);
   g += "\n";
@@ -231,7 +232,7 @@ void Tables::write() const {
     if (count == 0) continue;
     const Case& c = cases_[first];
     g += fmt::format("{:0{}}", c.group, width);
-    for (const std::string& v : c.values) g += "," + csv_text(v);
+    for (const std::string& v : c.values) g.append(",").append(csv_text(v));
     g += fmt::format(",{}", count);
     for (const auto& k : numeric) {
       std::vector<double> xs;

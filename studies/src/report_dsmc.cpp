@@ -16,6 +16,7 @@
 #include "clock.hpp"
 #include "hypergas/analysis/estimates.hpp"
 #include "hypergas/dsmc/engine.hpp"
+#include "hypergas/engines.hpp"  // the engines, compiled once (extern)
 #include "hypergas/dsmc/maxwell_theory.hpp"
 #include "hypergas/registry.hpp"
 #include "hypergas/studies/replicas.hpp"

@@ -7,6 +7,7 @@
 #include "clock.hpp"
 #include "hypergas/analysis/estimates.hpp"
 #include "hypergas/edmd/engine.hpp"
+#include "hypergas/engines.hpp"  // the engines, compiled once (extern)
 #include "hypergas/edmd/observables.hpp"
 #include "hypergas/registry.hpp"
 #include "hypergas/studies/replicas.hpp"

@@ -254,7 +254,7 @@ inline std::string physics_summary(const fs::path& file) {
   static const std::vector<std::string> skip = {
       "\"wall_s\"",   "\"collisions_per_s\"", "\"engine_s\"",  "\"analysis_s\"",
       "\"checkpoints\"", "\"resumes\"",       "\"peak_rss_bytes_per_particle\"",
-      "\"output_s\""};
+      "\"output_s\"",  "\"setup_s\""};
   std::string text = slurp(file), out;
   // The file is one object on one line, pairs separated by `, "` (analysis/output.cpp).
   std::size_t pos = 0;

@@ -41,6 +41,33 @@ TEST_CASE("run: non-finite or negative mass ratio is rejected", "[cli]") {
   expect_rejected({"run", "--fraction", "1.5"}, "--fraction must be in [0, 1]");
 }
 
+TEST_CASE("an unknown option or subcommand: one line naming the nearest", "[cli]") {
+  expect_rejected({"run", "--dim", "3", "--restitutoin", "0.5"},
+                  "hypergas: run: unknown option '--restitutoin'; did you mean '--restitution'?");
+  expect_rejected({"run", "--packnig", "0.2"}, "did you mean '--packing'?");
+  expect_rejected({"run", "--zzzzzz", "1"}, "hypergas: run: unknown option '--zzzzzz'");
+  Scratch s("typo");
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"runn"}, {"run", "--dim", "3", "--restitutoin", "0.5"}}) {
+    const auto r = cli_test::run(args, s.path());
+    CHECK(r.code == 2);
+    CHECK(cli_test::lines(r.err).size() == 1);  // one line, not the arguments reversed
+    if (args[0] == "runn") CHECK(r.err.find("did you mean 'run'?") != std::string::npos);
+  }
+}
+
+TEST_CASE("run: combinations that mean nothing are rejected", "[cli]") {
+  // a second-species share without a second mass was dropped ("fraction": 0 in the summary)
+  expect_rejected({"run", "--fraction", "0.3"}, "--fraction is the share of the second mass");
+  expect_rejected({"run", "--fraction", "0.3", "--mass-ratio", "1"}, "--mass-ratio other than 1");
+  // BKW is an exact solution of Maxwell molecules only
+  expect_rejected({"run", "--init", "bkw"}, "--init bkw is the exact solution for Maxwell");
+  expect_rejected({"run", "--init", "bkw", "--model", "hs"}, "add --model maxwell (not hs)");
+  // 1D elastic, one mass: collisions only swap velocities (KS p 0 at the end, no word)
+  expect_rejected({"run", "--dim", "1"}, "--dim 1 with one mass");
+  expect_rejected({"run", "--dim", "1", "--init", "maxwell"}, "give --mass-ratio");
+}
+
 TEST_CASE("run: non-finite or negative temperature is rejected", "[cli]") {
   for (const char* t : {"-1", "0", "nan", "inf"})
     expect_rejected({"run", "--temperature", t}, "--temperature must be a finite kT > 0");

@@ -13,6 +13,22 @@ TEST_CASE("hypergas --help lists the subcommands", "[cli]") {
     CHECK(r.out.find(word) != std::string::npos);
 }
 
+TEST_CASE("hypergas --version names the version and the git state", "[cli]") {
+  cli_test::Scratch s("version");
+  const auto r = cli_test::run({"--version"}, s.path());
+  CHECK(r.code == 0);
+  INFO(r.out << r.err);
+  CHECK(r.out.rfind("hypergas 0.1.0 (git ", 0) == 0);
+  CHECK(cli_test::lines(r.out).size() == 1);
+  // ... and every summary says the same
+  const auto out = s.path() / "out";
+  REQUIRE(cli_test::run({"run", "--n", "500", "--until", "1", "--out", out.string()}, s.path())
+              .code == 0);
+  const std::string summary = cli_test::slurp(out / "summary.json");
+  CHECK(summary.find("\"version\": \"0.1.0\"") != std::string::npos);
+  CHECK(summary.find("\"git\": \"") != std::string::npos);
+}
+
 TEST_CASE("hypergas run --help lists every option with unit and default", "[cli]") {
   cli_test::Scratch s("help");
   const auto r = cli_test::run({"run", "--help"}, s.path());

@@ -60,6 +60,12 @@ TEST_CASE("run --engine dsmc writes the contract's files", "[cli]") {
   const auto lines = cli_test::lines(r.out);
   REQUIRE(!lines.empty());
   CHECK(lines.back() + "\n" == summary);
+  // The plots say what was run and carry the error bars the CSV has (plot.gp: their script)
+  const std::string gp = cli_test::slurp(out / "plot.gp");
+  CHECK(gp.find("run_title = \"dsmc, D = 3, N = 2000, hs, seed 7\"") != std::string::npos);
+  CHECK(gp.find("'kurtosis_x_err' with yerrorbars") != std::string::npos);
+  CHECK(gp.find("granular = 0") != std::string::npos);
+  CHECK(!cli_test::fs::exists(out / "cooling.png"));
   // No staging folder is left in the output folder.
   for (const auto& e : cli_test::fs::directory_iterator(out))
     CHECK(e.path().filename().string().rfind(".hypergas-staging", 0) != 0);
@@ -208,6 +214,22 @@ TEST_CASE("run --transport writes transport.csv, correlations.csv and transport.
   check_summary_keys(cli_test::slurp(out / "summary.json"),
                      {"viscosity", "viscosity_error", "viscosity_ratio", "thermal_conductivity",
                       "self_diffusion_ratio_error", "transport_samples"});
+  // Maxwell molecules: the first Sonine values are exact, no converged value is quoted
+  CHECK(r.out.find("(reduced by n, kT, m and the mean collision time)") != std::string::npos);
+  CHECK(r.out.find("Pekeris-Alterman") == std::string::npos);
+  // 3D hard spheres: the converged Chapman-Enskog values beside first Sonine,
+  // eta* = 1.25 x 1.016034 and lambda* = 4.6875 x 1.025218 (Pekeris & Alterman 1957)
+  const auto hs = cli_test::run({"run", "--engine", "dsmc", "--dim", "3", "--n", "200",
+                                 "--until", "420", "--transport", "--seed", "3", "--out",
+                                 (s.path() / "hs").string()},
+                                s.path());
+  INFO("stdout: " << hs.out);
+  REQUIRE(hs.code == 0);
+  CHECK(hs.out.find("first Sonine 1.25: ratio") != std::string::npos);
+  CHECK(hs.out.find("converged Chapman-Enskog (Pekeris-Alterman) 1.27: ratio") !=
+        std::string::npos);
+  CHECK(hs.out.find("converged Chapman-Enskog (Pekeris-Alterman) 4.8057: ratio") !=
+        std::string::npos);
 }
 
 TEST_CASE("run --engine edmd --transport --structure writes its files", "[cli]") {
@@ -233,6 +255,15 @@ TEST_CASE("run --engine edmd --transport --structure writes its files", "[cli]")
         "thermal_conductivity_helfand");
   CHECK(header(out / "rdf.csv") == "r,g,error");
   CHECK(header(out / "structure_factor.csv") == "k,S,error,vectors");
+  // the text says what each ratio divides by: a part over the dilute gas's whole first
+  // Sonine coefficient, and over Enskog's value of the same part
+  const auto text = cli_test::lines(r.out);
+  const auto cross = std::find_if(text.begin(), text.end(), [](const std::string& l) {
+    return starts_with(l, "  viscosity_cross ");
+  });
+  REQUIRE(cross != text.end());
+  CHECK(cross->find("over the dilute first Sonine viscosity ") != std::string::npos);
+  CHECK(cross->find("over Enskog's viscosity_cross ") != std::string::npos);
   // bins of 0.02 up to --rdf-max 3
   CHECK(cli_test::lines(cli_test::slurp(out / "rdf.csv")).size() == 1 + 150);
   for (const char* f : {"transport.png", "structure.png"}) CHECK(cli_test::fs::exists(out / f));
@@ -311,6 +342,80 @@ const std::vector<std::string> granular_keys{
 
 }  // namespace
 
+TEST_CASE("EDMD: Z and the collision rate with block errors", "[cli]") {
+  // The errors are honest when independent runs scatter by about as much: six seeds, the
+  // standard deviation of their Z (and collision rates) over the mean reported error must
+  // lie in [0.25, 3]. The sample sd of 6 values is chi-distributed with 5 degrees of
+  // freedom: below 0.25 sigma with probability 0.3 %, above 3 sigma with 1e-8 (the block
+  // errors' own scatter, 10 blocks, averages out over the six); these seeds give 1.0 and 0.7.
+  Scratch s("zerror");
+  std::vector<double> z, dz, nu, dnu;
+  for (int seed = 1; seed <= 6; ++seed) {
+    const auto out = s.path() / ("out" + std::to_string(seed));
+    const auto r = cli_test::run({"run", "--engine", "edmd", "--dim", "3", "--n", "500",
+                                  "--packing", "0.3", "--until", "40", "--seed",
+                                  std::to_string(seed), "--out", out.string()},
+                                 s.path());
+    INFO("stderr: " << r.err << "\nstdout: " << r.out);
+    REQUIRE(r.code == 0);
+    CHECK(r.out.find("Z = PV/NkT ") != std::string::npos);
+    const std::string summary = cli_test::slurp(out / "summary.json");
+    z.push_back(json_number(summary, "Z"));
+    dz.push_back(json_number(summary, "Z_error"));
+    nu.push_back(json_number(summary, "collision_rate"));
+    dnu.push_back(json_number(summary, "collision_rate_error"));
+  }
+  const auto ratio = [](const std::vector<double>& x, const std::vector<double>& err) {
+    double m = 0.0, v = 0.0, e = 0.0;
+    for (double xi : x) m += xi / static_cast<double>(x.size());
+    for (double xi : x) v += (xi - m) * (xi - m) / static_cast<double>(x.size() - 1);
+    for (double ei : err) e += ei / static_cast<double>(err.size());
+    return std::sqrt(v) / e;
+  };
+  for (double e : dz) CHECK(e > 0.0);
+  for (double e : dnu) CHECK(e > 0.0);
+  const double rz = ratio(z, dz), rnu = ratio(nu, dnu);
+  INFO("sd / error: Z " << rz << ", collision rate " << rnu);
+  CHECK(rz >= 0.25);
+  CHECK(rz <= 3.0);
+  CHECK(rnu >= 0.25);
+  CHECK(rnu <= 3.0);
+}
+
+TEST_CASE("an EDMD lattice start with vacancies is said: stderr and summary", "[cli]") {
+  Scratch s("vacancies");
+  // 400 particles in 3D: the fcc lattice of side 10 has 500 sites, 100 of them empty;
+  // 256 (side 8) and 500 fill a lattice
+  const auto out = s.path() / "out";
+  const auto r = cli_test::run({"run", "--engine", "edmd", "--dim", "3", "--n", "400",
+                                "--packing", "0.2", "--until", "1", "--out", out.string()},
+                               s.path());
+  INFO("stderr: " << r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.err.find("hypergas: note: 400 particles start on a lattice of 500 sites (100 vacancies, "
+                   "20.0 %); N = 256 or 500 fill a lattice in D = 3") != std::string::npos);
+  const std::string summary = cli_test::slurp(out / "summary.json");
+  CHECK(summary.find("\"lattice_sites\": 500") != std::string::npos);
+  CHECK(summary.find("\"vacancies\": 100") != std::string::npos);
+  CHECK(summary.find("\"setup_s\": ") != std::string::npos);
+  // a full lattice: no note, no vacancies
+  const auto full = cli_test::run({"run", "--engine", "edmd", "--dim", "3", "--n", "500",
+                                   "--packing", "0.2", "--until", "1", "--out",
+                                   (s.path() / "full").string()},
+                                  s.path());
+  REQUIRE(full.code == 0);
+  CHECK(full.err.find("vacancies") == std::string::npos);
+  CHECK(cli_test::slurp(s.path() / "full" / "summary.json").find("\"vacancies\": 0") !=
+        std::string::npos);
+  // DSMC says how long its start took as well
+  const auto dsmc = cli_test::run({"run", "--n", "1000", "--until", "1", "--out",
+                                   (s.path() / "dsmc").string()},
+                                  s.path());
+  REQUIRE(dsmc.code == 0);
+  CHECK(cli_test::slurp(s.path() / "dsmc" / "summary.json").find("\"setup_s\": ") !=
+        std::string::npos);
+}
+
 TEST_CASE("run --restitution 0.5: the DSMC gas cools by Haff's law", "[cli]") {
   namespace granular = hypergas::granular;
   Scratch s("haff");
@@ -328,6 +433,17 @@ TEST_CASE("run --restitution 0.5: the DSMC gas cools by Haff's law", "[cli]") {
   check_summary_keys(summary, {"haff_t0", "haff_t0_error", "haff_t0_sonine"});
   CHECK(summary.find("\"energy_rel_drift\": null") != std::string::npos);
   CHECK(json_number(summary, "restitution") == 0.5);
+  // the text says what a cooling gas measures, not only --json, and what its KS p means
+  CHECK(r.out.find("restitution 0.5: a2 ") != std::string::npos);
+  CHECK(r.out.find("Haff's t0 ") != std::string::npos);
+  CHECK(r.out.find("(against MB: a cooling gas is not Maxwellian)") != std::string::npos);
+  // its plots: T against Haff's law and a2 against first Sonine (cooling.png), from the
+  // script written beside them
+  CHECK(cli_test::fs::exists(out / "cooling.png"));
+  const std::string gp = cli_test::slurp(out / "plot.gp");
+  CHECK(gp.find("run_title = \"dsmc, D = 3, N = 2000, hs, seed 1\"") != std::string::npos);
+  CHECK(gp.find("granular = 1") != std::string::npos);
+  CHECK(gp.find("haff_t0 = ") != std::string::npos);
 
   // Every collision loses energy: T never rises, real time runs on; the time column counts
   // mean collision times at the current temperature, so real time outruns it.

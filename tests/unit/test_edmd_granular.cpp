@@ -468,7 +468,7 @@ TEST_CASE("equilibrium measurements refuse a granular gas; compression stays ela
   // The Helfand tally is an equilibrium transport measurement.
   const std::vector<double> v0(cfg.n * 3, 0.0);
   e.contacts().helfand =
-      std::make_unique<tally::Helfand>(3, e.time(), 0.1, v0.data(), cfg.n, 3,
+      std::make_shared<tally::Helfand>(3, e.time(), 0.1, v0.data(), cfg.n, 3,
                                        std::vector<std::uint32_t>{});
   REQUIRE_THROWS_AS(e.run_until(e.time() + 0.1), InvalidInput);
   REQUIRE_THROWS_AS(e.step(), InvalidInput);

@@ -20,7 +20,6 @@ namespace {
 /// Copies a snapshot (positions, velocities in the original numbering).
 struct Copy final : Observer {
   std::vector<double> x, v;
-  tally::ContactSlot* slot = nullptr;
   void observe(const Snapshot& s) override {
     x.assign(s.n * std::size_t(s.dim), 0.0), v.assign(s.n * std::size_t(s.dim), 0.0);
     for (std::size_t i = 0; i < s.n; ++i)
@@ -28,7 +27,6 @@ struct Copy final : Observer {
         x[i * std::size_t(s.dim) + std::size_t(a)] = s.positions[i * std::size_t(s.stride) + std::size_t(a)];
         v[i * std::size_t(s.dim) + std::size_t(a)] = s.velocities[i * std::size_t(s.stride) + std::size_t(a)];
       }
-    slot = s.contacts;
   }
 };
 
@@ -45,8 +43,9 @@ void check_tally(double packing, std::size_t n) {
   const double t0 = e.time(), dt = 0.25;
   const std::uint64_t coll_start = e.collisions();
   const std::vector<std::uint32_t> tagged{0, 3, static_cast<std::uint32_t>(n - 1)};
-  c.slot->helfand = std::make_unique<tally::Helfand>(D, t0, dt, c.v.data(), n, D, tagged);
-  const tally::Helfand& H = *c.slot->helfand;
+  tally::ContactSlot& slot = e.contacts();
+  slot.helfand = std::make_shared<tally::Helfand>(D, t0, dt, c.v.data(), n, D, tagged);
+  const tally::Helfand& H = *slot.helfand;
   const int S = H.stress_components();
   // the reference: K and E from every velocity after each event, integrated exactly
   std::vector<double> ref(std::size_t(2 * S + 2 * D + int(tagged.size()) * D), 0.0);
@@ -121,8 +120,8 @@ void check_tally(double packing, std::size_t n) {
       for (int a = 0; a < D; ++a)
         ref[std::size_t(2 * S + 2 * D) + k * D + std::size_t(a)] += v_old[tagged[k] * D + std::size_t(a)] * h;
   }
-  c.slot->helfand->close_until(t_end);
-  const std::vector<double> rec = c.slot->helfand->take();
+  slot.helfand->close_until(t_end);
+  const std::vector<double> rec = slot.helfand->take();
   const std::size_t R = std::size_t(H.record_size());
   REQUIRE(rec.size() == 40 * R);
   REQUIRE(H.collisions() == e.collisions() - coll_start);  // (the last one is past t_end)
@@ -156,7 +155,7 @@ TEST_CASE("Helfand tally: the trajectory is the same with and without it", "[hel
   a.run_until(1.0), b.run_until(1.0);
   Copy c;
   b.observe(c);
-  c.slot->helfand = std::make_unique<tally::Helfand>(3, b.time(), 0.1, c.v.data(), cfg.n, 3,
+  b.contacts().helfand = std::make_shared<tally::Helfand>(3, b.time(), 0.1, c.v.data(), cfg.n, 3,
                                                      std::vector<std::uint32_t>{1});
   a.run_until(5.0), b.run_until(5.0);
   REQUIRE(a.collisions() == b.collisions());

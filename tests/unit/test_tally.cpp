@@ -215,12 +215,17 @@ TEST_CASE("Tally: dropped where rows are sparse, with the same rows", "[tally]")
   analysis::MomentsRecorder ra, rb;
   Strip strip;
   strip.to = &rb;
-  struct Probe final : Observer {
+  struct Probe final : Observer {  // whether the engine keeps a tally after each row
     analysis::MomentsRecorder* to;
     std::vector<bool> kept;
+    bool had = false;
     void observe(const Snapshot& s) override {
       to->observe(s);
-      kept.push_back(s.tally->tally != nullptr);
+      had = s.tally->tally != nullptr;
+    }
+    void request(tally::Requests& r) override {
+      to->request(r);
+      kept.push_back(r.replace_tally ? r.tally != nullptr : had);
     }
   } probe;
   probe.to = &ra;

@@ -20,19 +20,23 @@ using namespace hypergas;
 
 namespace {
 
-/// Installs collective fluxes at its first snapshot; later snapshots compare them with a
-/// fresh sum over the velocities.
+/// Asks the engine to keep collective fluxes made at its first snapshot; later snapshots
+/// compare them with a fresh sum over the velocities.
 struct FluxCheck final : Observer {
   int compared = 0, equal = 0;
+  std::unique_ptr<tally::Fluxes> made;
   void observe(const Snapshot& s) override {
     tally::Fluxes fresh(s.dim, 1.0);
     for (std::size_t i = 0; i < s.n; ++i) fresh.add(s.velocities + i * std::size_t(s.stride), 1);
     if (!s.tally->fluxes) {
-      s.tally->fluxes = std::make_unique<tally::Fluxes>(fresh);
+      made = std::make_unique<tally::Fluxes>(fresh);
       return;
     }
     ++compared;
     equal += (*s.tally->fluxes == fresh);
+  }
+  void request(tally::Requests& r) override {
+    if (made) r.set_fluxes(std::move(made));
   }
 };
 

@@ -132,8 +132,9 @@ class Engine {
   }
 
   /// Calls obs with the current state (velocities, time, counters) and the engine's tally
-  /// slot (hypergas/tally/tally.hpp): a tally obs installs there is kept up to date by
-  /// every later collision. Changes nothing in the trajectory.
+  /// slot (hypergas/tally/tally.hpp), then installs what obs.request asks for: a tally so
+  /// installed is kept up to date by every later collision. Changes nothing in the
+  /// trajectory.
   void observe(Observer& obs) {
     Snapshot snap = make_snapshot(s_.p);
     snap.time = s_.time;
@@ -152,6 +153,9 @@ class Engine {
       snap.n_species = ns;
     }
     obs.observe(snap);
+    tally::Requests r;
+    obs.request(r);
+    if (snap.tally) s_.tally.apply(r);
   }
 
   /// Advances the process to time t (mean collision times; engine_concept.hpp). With an

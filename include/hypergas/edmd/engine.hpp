@@ -404,7 +404,9 @@ class Engine {
 
   /// Observes the state at time ts (>= every local clock) in the original numbering
   /// (snapshot.hpp).
-  void sample(double ts, Observer& obs) const { observe_state(s_, ts, obs, &contacts_); }
+  void sample(double ts, Observer& obs) const {
+    observe_state(s_, ts, obs, &contacts_, &win_);
+  }
 
   ScanState<D, F> s_;        // particles, events, cells, clock, counters (state.hpp) and
                              // the scratch of the scans (prediction.hpp)

@@ -27,17 +27,28 @@ struct LatticeSites {
   double nearest = 0.0;  ///< length: the largest diameter that fits without overlap
 };
 
+/// The number of sites of the lattice with M cells per side in D dimensions: M^D, or M^D / 2
+/// for the checkerboard lattice (D >= 3).
+inline double lattice_capacity(int D, std::uint64_t M) {
+  const double c = std::pow(static_cast<double>(M), D);
+  return D >= 3 ? c / 2.0 : c;
+}
+
+/// The cells per side of the start lattice for n particles: the smallest M (even for
+/// D >= 3) whose lattice holds n. n fills it when lattice_capacity(D, M) == n.
+inline std::uint64_t lattice_side(int D, std::size_t n) {
+  const std::uint64_t step = D >= 3 ? 2 : 1;
+  std::uint64_t M = step;
+  while (lattice_capacity(D, M) < static_cast<double>(n)) M += step;
+  return M;
+}
+
 /// N sites of the lattice described above in a periodic cube of side L (lengths).
 template <int D>
 LatticeSites<D> lattice_sites(std::size_t n, double L, Rng& rng) {
   if (n == 0) throw InvalidInput("lattice: need at least one particle");
   const bool checker = (D >= 3);
-  auto capacity = [&](std::uint64_t M) {
-    double c = std::pow(static_cast<double>(M), D);
-    return checker ? c / 2.0 : c;
-  };
-  std::uint64_t M = checker ? 2 : 1;
-  while (capacity(M) < static_cast<double>(n)) M += checker ? 2 : 1;
+  const std::uint64_t M = lattice_side(D, n);
   // Enumerate sites.
   std::vector<std::uint64_t> sites;
   std::uint64_t total = 1;

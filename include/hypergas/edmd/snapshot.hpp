@@ -14,18 +14,21 @@
 #include <cstdint>
 #include <vector>
 
+#include "hypergas/edmd/observables.hpp"
 #include "hypergas/edmd/state.hpp"
 #include "hypergas/observer.hpp"
 #include "hypergas/particles.hpp"
+#include "hypergas/tally/helfand.hpp"
 
 namespace hypergas::edmd {
 
 /// Calls obs with the state `s` at time ts (>= every local clock), in the original
 /// numbering (State::slot), positions unwrapped by the periodic image counts. Changes
-/// nothing (but `contacts`, the engine's Helfand slot, is handed to obs).
+/// nothing but `contacts`, the engine's Helfand slot, which receives what obs requests.
 template <int D, Features F>
 void observe_state(const State<D, F>& s, double ts, Observer& obs,
-                   tally::ContactSlot* contacts = nullptr) {
+                   tally::ContactSlot* contacts = nullptr,
+                   const MeasurementWindow* window = nullptr) {
   const std::size_t n = s.size();
   constexpr int st = 2 * D;
   std::vector<double> rec(n * st);
@@ -46,6 +49,11 @@ void observe_state(const State<D, F>& s, double ts, Observer& obs,
   snap.time = ts;
   snap.box = s.L;
   snap.contacts = contacts;
+  if (window) {
+    snap.window_start = window->t0;
+    snap.window_virial = window->virial;
+    snap.window_collisions = window->collisions(s.ncoll);
+  }
   snap.collisions = s.ncoll;
   snap.collisions_per_particle = 2.0 * static_cast<double>(s.ncoll) / static_cast<double>(n);
   std::vector<std::uint8_t> species;
@@ -63,6 +71,9 @@ void observe_state(const State<D, F>& s, double ts, Observer& obs,
     snap.n_species = ns;
   }
   obs.observe(snap);
+  tally::Requests r;
+  obs.request(r);
+  if (contacts) contacts->apply(r);
 }
 
 }  // namespace hypergas::edmd

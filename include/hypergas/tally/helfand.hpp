@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "hypergas/error.hpp"
+#include "hypergas/tally/tally.hpp"
 #include "hypergas/vec.hpp"
 
 namespace hypergas::tally {
@@ -222,9 +223,9 @@ class Helfand {
 };
 
 /// Where the EDMD engine keeps its Helfand tally (Snapshot::contacts): empty unless a
-/// recorder installed one.
+/// recorder asked for one (Requests::helfand); the recorder keeps a share to read it.
 struct ContactSlot {
-  std::unique_ptr<Helfand> helfand;
+  std::shared_ptr<Helfand> helfand;
 
   ContactSlot() = default;
   ContactSlot(ContactSlot&&) noexcept = default;
@@ -234,6 +235,10 @@ struct ContactSlot {
   ContactSlot& operator=(const ContactSlot&) {
     helfand.reset();
     return *this;
+  }
+  /// Installs the Helfand tally `r` asks for, if any (Requests).
+  void apply(Requests& r) {
+    if (r.helfand) helfand = std::move(r.helfand);
   }
 };
 

@@ -40,8 +40,10 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <string>
 #include <vector>
 
+#include "hypergas/error.hpp"
 #include "hypergas/observer.hpp"
 #include "hypergas/particles.hpp"
 #include "hypergas/tally/exact_sum.hpp"
@@ -427,13 +429,54 @@ inline void Tally::fold() const {
   }
 }
 
+class Helfand;  // helfand.hpp
+
+/// What the observers of one snapshot ask the engine to keep from then on
+/// (Observer::request), each built from the snapshot it saw. The engine applies the requests
+/// after every observer has returned, so a snapshot does not change while it is observed.
+/// One observer per item: a second one asking for the same item is an error, not a silent
+/// replacement.
+struct Requests {
+  bool replace_tally = false;        ///< set the engine's tally to `tally` (nullptr: drop it)
+  std::unique_ptr<Tally> tally;      ///< moments and histograms (DSMC)
+  std::unique_ptr<Fluxes> fluxes;    ///< collective fluxes to install (DSMC transport)
+  std::shared_ptr<Helfand> helfand;  ///< a Helfand tally to install (EDMD), shared with its reader
+
+  /// Asks for `t` as the engine's tally (nullptr: keep none).
+  void set_tally(std::unique_ptr<Tally> t) {
+    if (replace_tally) conflict("tally");
+    replace_tally = true;
+    tally = std::move(t);
+  }
+  void set_fluxes(std::unique_ptr<Fluxes> f) {
+    if (fluxes) conflict("collective fluxes");
+    fluxes = std::move(f);
+  }
+  void set_helfand(std::shared_ptr<Helfand> h) {
+    if (helfand) conflict("Helfand tally");
+    helfand = std::move(h);
+  }
+
+ private:
+  [[noreturn]] static void conflict(const char* what) {
+    throw InvalidInput(std::string("two observers of one snapshot ask for the engine's ") +
+                       what + "; an engine keeps one");
+  }
+};
+
 /// Where an engine keeps what an analysis asked it to keep per collision (Snapshot::tally):
-/// the analysis installs a tally (moments, histograms) and/or collective fluxes (transport,
-/// fluxes.hpp) built from the snapshot's velocities, and the engine applies every later
-/// collision to them until they are replaced or dropped.
+/// a tally (moments, histograms) and/or collective fluxes (transport, fluxes.hpp) built from
+/// a snapshot's velocities; the engine applies every later collision to them until they are
+/// replaced or dropped.
 struct Slot {
   std::unique_ptr<Tally> tally;
   std::unique_ptr<Fluxes> fluxes;
+
+  /// Installs what `r` asks for (Requests).
+  void apply(Requests& r) {
+    if (r.replace_tally) tally = std::move(r.tally);
+    if (r.fluxes) fluxes = std::move(r.fluxes);
+  }
 };
 
 }  // namespace hypergas::tally

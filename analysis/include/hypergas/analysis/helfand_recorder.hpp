@@ -46,6 +46,7 @@
 #include "hypergas/analysis/correlator.hpp"
 #include "hypergas/analysis/transport_recorder.hpp"
 #include "hypergas/observer.hpp"
+#include "hypergas/tally/helfand.hpp"
 
 namespace hypergas::analysis {
 
@@ -58,6 +59,8 @@ class HelfandRecorder final : public Observer {
   HelfandRecorder(const TransportSettings& s, int dim, std::size_t n, double start, double end);
 
   void observe(const Snapshot& s) override;
+  /// Asks the engine to keep the Helfand tally made at the first sample (once).
+  void request(tally::Requests& r) override;
   /// Grid intervals recorded so far.
   std::uint64_t frames() const { return corr_ ? corr_->frames() : 0; }
   /// Computes the coefficients (once, after the run).
@@ -89,6 +92,8 @@ class HelfandRecorder final : public Observer {
   std::uint64_t coll_first_ = 0, coll_last_ = 0;
   std::vector<std::uint32_t> tagged_;
   std::unique_ptr<BlockCorrelator> corr_;
+  std::shared_ptr<tally::Helfand> tally_;  // updated by the engine, read here
+  bool installed_ = false;                 // the engine was asked to keep tally_
   std::vector<double> frame_;
   std::vector<std::vector<double>> curves_;
   std::vector<TransportCoefficient> result_;

@@ -69,6 +69,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -106,6 +107,9 @@ class MomentsRecorder final : public Observer {
   /// Records one row; throws InvalidInput for an unreadable snapshot or one whose number of
   /// species differs from the first (nothing is recorded then).
   void observe(const Snapshot& s) override;
+  /// Asks the engine to keep the tally of the last snapshot, or to drop its tally, as
+  /// observe decided (tally_limit); asks nothing when the engine's tally stays as it is.
+  void request(tally::Requests& r) override;
 
   /// Column names, fixed by the first snapshot (the per-species columns need it).
   const std::vector<std::string>& columns() const { return columns_; }
@@ -186,6 +190,8 @@ class MomentsRecorder final : public Observer {
   /// f(thread, chunk) for chunks 0..chunks-1, chunk c on thread c mod T; rethrows the
   /// first exception of a thread.
   void for_chunks(std::size_t chunks, const std::function<void(int, std::size_t)>& f) const;
+  /// Sets what request() asks the engine for: the tally `t`, or none.
+  void ask(std::optional<tally::Tally> t);
   /// Index into last_histograms_ of `species`; throws InvalidInput naming `what`.
   std::size_t histogram_index(int species, const std::string& what) const;
 
@@ -208,6 +214,10 @@ class MomentsRecorder final : public Observer {
   // the tally again, and the rows are the same either way
   std::uint64_t last_collisions_ = 0;
   bool have_last_ = false;
+  // what observe decided the engine should keep (request): ask_ set, pending_ the tally
+  // (empty: none); not state
+  bool ask_ = false;
+  std::optional<tally::Tally> pending_;
   /// The thread team of set_threads; a copy of the recorder gets none (one thread), so
   /// that two recorders never drive one team.
   struct Team {

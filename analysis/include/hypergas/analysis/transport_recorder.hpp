@@ -43,11 +43,13 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "hypergas/analysis/correlator.hpp"
 #include "hypergas/observer.hpp"
+#include "hypergas/tally/fluxes.hpp"
 
 namespace hypergas::analysis {
 
@@ -102,6 +104,12 @@ struct CollisionLaw {
 /// a rate exponent other than 1.
 std::vector<double> first_sonine(const CollisionLaw& law, int dim);
 
+/// The converged Chapman-Enskog value over the first Sonine one where a published value
+/// exists: hard spheres in 3D, viscosity 1.016034 and thermal conductivity 1.025218
+/// (Pekeris & Alterman, Proc. Natl. Acad. Sci. USA 43, 998 (1957)); NaN elsewhere (Maxwell
+/// molecules need none: their first Sonine values are exact).
+double converged_over_sonine(const CollisionLaw& law, int dim, const std::string& name);
+
 class TransportRecorder final : public Observer {
  public:
   /// A recorder for a D-dimensional one-species gas of n particles, `frames` planned
@@ -110,6 +118,8 @@ class TransportRecorder final : public Observer {
                     CollisionLaw law);
 
   void observe(const Snapshot& s) override;
+  /// Asks the engine to keep the fluxes made at the first sample (tally/fluxes.hpp).
+  void request(tally::Requests& r) override;
   /// Samples taken so far.
   std::uint64_t frames() const { return corr_.frames(); }
   /// Computes the coefficients (call once, after the run; more samples cannot follow).
@@ -136,6 +146,7 @@ class TransportRecorder final : public Observer {
   std::vector<double> frame_, last_x_;
   std::vector<std::vector<double>> curves_;
   std::vector<TransportCoefficient> result_;
+  std::unique_ptr<tally::Fluxes> pending_;  // made from a snapshot, for the engine to keep
 };
 
 }  // namespace hypergas::analysis

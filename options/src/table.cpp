@@ -48,7 +48,7 @@ const Option table[] = {
   {"engine", 0, E::both, U::command, &R::engine, {}, check_engine, engines_help, "", "the engine:", "", false, false},
   {"dim", 'd', E::both, U::engine, &R::dim, {1, 6, false, false, "a dimension in 1..6"}, nullptr, nullptr, "", "dimension D, 1..6", "", false, false},
   {"n", 'n', E::both, U::engine, &R::n, {2, 2147483648.0, false, false, "a number of particles in 2..2^31"}, nullptr, nullptr, "", "number of particles, >= 2 (1e6 is read as 1000000)", "", false, false},
-  {"out", 'o', E::both, U::command, &R::out, {}, nullptr, nullptr, "", "output folder (created if missing); files appear only when complete", "", false, true},
+  {"out", 'o', E::both, U::command, &R::out, {}, nullptr, nullptr, "", "output folder (created if missing); files appear only when complete, replace an earlier run's, and a folder with other files is refused", "", false, true},
   {"json", 0, E::both, U::command, &R::json, {}, nullptr, nullptr, "", "print the summary as one JSON object, the last stdout line", "", false, false},
   {"model", 0, E::dsmc, U::engine, &R::model, {}, check_model, models_help, "", "collision model:", "", false, false},
   {"vhs-exponent", 0, E::dsmc, U::engine, &R::vhs_exponent, {0, 1, false, false, "in [0, 1]"}, nullptr, nullptr, "", "VHS rate exponent a: pair rate ~ |g|^a, in [0, 1] (hs is 1, maxwell 0; with --model vhs only)", "", false, false},

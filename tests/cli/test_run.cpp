@@ -342,6 +342,32 @@ const std::vector<std::string> granular_keys{
 
 }  // namespace
 
+TEST_CASE("EDMD: no Green-Kubo diffusion from a VACF sampled too coarsely", "[cli]") {
+  // 4D, packing 0.2: the mean free time is about 0.057; the default sampling (50 intervals
+  // of [4, 20], 0.32) samples the VACF every 5.6 mean free times, where its integral was
+  // 50 % high
+  Scratch s("vacf");
+  const std::vector<std::string> base{"run", "--engine", "edmd", "--dim", "4", "--n", "1000",
+                                      "--packing", "0.2", "--until", "20", "--seed", "1"};
+  auto coarse_args = base;
+  coarse_args.insert(coarse_args.end(), {"--out", (s.path() / "coarse").string()});
+  const auto coarse = cli_test::run(coarse_args, s.path());
+  REQUIRE(coarse.code == 0);
+  CHECK(coarse.out.find("diffusion_green_kubo not given") != std::string::npos);
+  const std::string cs = cli_test::slurp(s.path() / "coarse" / "summary.json");
+  CHECK(cs.find("\"diffusion_green_kubo\": null") != std::string::npos);
+  CHECK(json_number(cs, "vacf_dt") == Approx(0.32));  // 50 intervals of [4, 20]
+  auto fine_args = base;
+  fine_args.insert(fine_args.end(), {"--every", "0.01", "--out", (s.path() / "fine").string()});
+  const auto fine = cli_test::run(fine_args, s.path());
+  REQUIRE(fine.code == 0);
+  CHECK(fine.out.find("diffusion_green_kubo not given") == std::string::npos);
+  const std::string fs = cli_test::slurp(s.path() / "fine" / "summary.json");
+  const double d = json_number(fs, "diffusion_green_kubo");
+  CHECK(std::isfinite(d));
+  CHECK(d > 0.0);
+}
+
 TEST_CASE("EDMD: Z and the collision rate with block errors", "[cli]") {
   // The errors are honest when independent runs scatter by about as much: six seeds, the
   // standard deviation of their Z (and collision rates) over the mean reported error must

@@ -4,8 +4,8 @@
 //
 // The recorder is an Observer on the EDMD run's snapshots. At its first snapshot at or
 // after `start` it measures the mean free time tau so far (collisions per particle over the
-// time), fixes a grid of spacing dt tau, and installs a Helfand tally in the engine
-// (tally/helfand.hpp), which every later collision updates. Each snapshot drains the grid
+// time), fixes a grid of spacing dt tau, and makes a Helfand tally that it shares with the
+// engine (Observer::request; tally/helfand.hpp), which every later collision updates. Each snapshot drains the grid
 // intervals closed since the last one into a BlockCorrelator (correlator.hpp) and renews
 // the tally's kinetic sums from the velocities. Units: sigma = m = 1, kT = 2 E / (D (N - 1))
 // (zero total momentum), volume V = L^D. Per grid interval h = dt tau the series are

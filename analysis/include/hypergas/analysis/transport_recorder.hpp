@@ -2,8 +2,9 @@
 // Boltzmann gas from the equilibrium fluctuations of the velocity-space (DSMC) engine.
 //
 // The recorder is an Observer called on a fine grid of instants (spacing dt). At its first
-// snapshot at or after `warmup` it installs collective fluxes in the engine's tally slot
-// (hypergas/tally/fluxes.hpp), which every later collision updates exactly; each snapshot
+// snapshot at or after `warmup` it makes collective fluxes and asks the engine to keep them
+// (Observer::request; hypergas/tally/fluxes.hpp), and every later collision updates them
+// exactly; each snapshot
 // then reads them, and the velocities of `tagged` particles, into a BlockCorrelator
 // (correlator.hpp). Units: the engine's, m = 1 (one species), kT = sum |v|^2 / (D (N - 1))
 // (conserved; dsmc/time_unit.hpp), time in equilibrium mean collision times tau. With

@@ -6,6 +6,7 @@
 #include <fmt/core.h>
 
 #include "hypergas/registry.hpp"
+#include "version.hpp"
 
 namespace hypergas::cli {
 
@@ -41,10 +42,7 @@ bool Checkpointer::due(double t, const DriverState& st) const {
 }
 
 std::string build_identity() {
-#ifndef HYPERGAS_VERSION
-#define HYPERGAS_VERSION "unknown"
-#endif
-  return fmt::format("hypergas {} ({} {}, {}-bit)", HYPERGAS_VERSION,
+  return fmt::format("hypergas {} ({} {}, {}-bit)", version(),
 #if defined(__clang__)
                      "clang",
 #else

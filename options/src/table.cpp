@@ -8,8 +8,11 @@
 #include <fmt/ranges.h>
 
 #include "hypergas/error.hpp"
+#include "reject.hpp"
 
 namespace hypergas::options {
+
+using detail::reject;
 
 namespace {
 
@@ -79,13 +82,11 @@ const Option table[] = {
 };
 // clang-format on
 
-[[noreturn]] void bad(const std::string& m) { throw InvalidInput(m); }
-
 void check_range(const Option& opt, double v, const std::string& shown) {
   const Range& r = opt.range;
   const bool ok = std::isfinite(v) && (r.lo_open ? v > r.lo : v >= r.lo) &&
                   (r.hi_open ? v < r.hi : v <= r.hi);
-  if (!ok) bad(fmt::format("--{} must be {}, got {}", opt.name, r.must, shown));
+  if (!ok) reject(fmt::format("--{} must be {}, got {}", opt.name, r.must, shown));
 }
 
 void given(RunOptions& o, const Option& opt) {
@@ -184,7 +185,7 @@ void set_text(RunOptions& o, const Option& opt, const std::string& text) {
         else if constexpr (std::is_same_v<T, std::uint64_t>)
           set_unsigned(o, opt, parse_number<std::uint64_t>(name, text));
         else if constexpr (std::is_same_v<T, bool>) {
-          if (text != "true" && text != "false") bad(name + " is a flag: true or false");
+          if (text != "true" && text != "false") reject(name + " is a flag: true or false");
           set_flag(o, opt, text == "true");
         } else if constexpr (std::is_same_v<T, std::string>) set_string(o, opt, text);
         else set_integer(o, opt, parse_number<long long>(name, text));
@@ -194,7 +195,7 @@ void set_text(RunOptions& o, const Option& opt, const std::string& text) {
 
 void set_integer(RunOptions& o, const Option& opt, long long v) {
   if (std::holds_alternative<std::uint64_t R::*>(opt.field)) {
-    if (v < 0) bad(fmt::format("--{} must be {}, got {}", opt.name, opt.range.must, v));
+    if (v < 0) reject(fmt::format("--{} must be {}, got {}", opt.name, opt.range.must, v));
     return set_unsigned(o, opt, static_cast<std::uint64_t>(v));
   }
   check_range(opt, static_cast<double>(v), std::to_string(v));
@@ -231,10 +232,10 @@ void set_string(RunOptions& o, const Option& opt, const std::string& v) {
     } catch (const InvalidInput& e) {
       const std::string what = e.what();
       // parse_duration names the option itself
-      bad(what.rfind(cli_name(opt), 0) == 0 ? what : cli_name(opt) + ": " + what);
+      reject(what.rfind(cli_name(opt), 0) == 0 ? what : cli_name(opt) + ": " + what);
     }
   }
-  if (opt.required_cli && v.empty()) bad(cli_name(opt) + " must not be empty");
+  if (opt.required_cli && v.empty()) reject(cli_name(opt) + " must not be empty");
   o.*(*p) = v;
   given(o, opt);
 }

@@ -14,12 +14,13 @@
 #include "hypergas/initial_state.hpp"
 #include "hypergas/options/table.hpp"
 #include "hypergas/vec.hpp"
+#include "reject.hpp"
 
 namespace hypergas::options {
 
-namespace {
-[[noreturn]] void reject(const std::string& msg) { throw InvalidInput(msg); }
+using detail::reject;
 
+namespace {
 /// Refuses a particle number whose state would not fit in this machine's memory.
 void check_memory(long long n, int dim, bool edmd) {
   // Bytes per particle, a lower estimate: DSMC the padded velocities and a species byte;

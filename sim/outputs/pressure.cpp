@@ -12,6 +12,7 @@
 
 #include "../output_dir.hpp"
 #include "hypergas/analysis/estimates.hpp"
+#include "hypergas/analysis/sample.hpp"
 #include "hypergas/checkpoint.hpp"
 #include "output.hpp"
 
@@ -28,15 +29,8 @@ class Intervals final : public Observer {
   void observe(const Snapshot& s) override {
     if (!std::isfinite(s.window_start)) return;
     if (s.window_start == start_ && s.time > time_) {
-      double e = 0.0;  // sum m v^2, as the engine's temperature()
-      for (std::size_t i = 0; i < s.n; ++i) {
-        const double* v = s.velocities + i * static_cast<std::size_t>(s.stride);
-        double v2 = 0.0;
-        for (int a = 0; a < s.dim; ++a) v2 += v[a] * v[a];
-        e += v2 / s.inverse_mass(i);
-      }
       const double n = static_cast<double>(s.n), dt = s.time - time_;
-      const double kT = e / (s.dim * n);
+      const double kT = analysis::temperature(s);  // sum m v^2 / (D N)
       z_.push_back(1.0 + (s.window_virial - virial_) / (s.dim * n * kT * dt));
       rate_.push_back(2.0 * static_cast<double>(s.window_collisions - collisions_) / (n * dt));
     }

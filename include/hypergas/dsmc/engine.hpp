@@ -105,7 +105,7 @@ class Engine {
   /// Restores an engine saved by io() (hypergas/checkpoint.hpp); it continues bit for bit as
   /// the saved one would have. Throws InvalidInput if the file holds another engine,
   /// dimension, model or feature set.
-  Engine(const Config& cfg, checkpoint::Reader& in) : s_(cfg, make_model(cfg)) { io(in); }
+  Engine(const Config& cfg, checkpoint::Reader& in);
   Engine(Engine&&) noexcept = default;
   Engine& operator=(Engine&&) noexcept = default;
 
@@ -113,18 +113,7 @@ class Engine {
   /// majorant and the counters (the candidates' draws are functions of their number, so the
   /// number of candidates so far is their whole state). The thread count is not state.
   template <class Archive>
-  void io(Archive& a) {
-    static_assert(std::is_trivially_copyable_v<Rng> && std::is_trivially_copyable_v<Model> &&
-                  std::is_trivially_copyable_v<Config>);
-    a.tag(identity());
-    a(s_.cfg, s_.p, s_.model, s_.rng, s_.n, s_.c, s_.lambda, s_.bound, s_.raise_to, s_.time,
-      s_.observed_at);
-    a(s_.collisions, s_.candidates, s_.since_scan, s_.self_check, s_.check_failures,
-      s_.species_w);
-    a(s_.log_scale, s_.real_time, s_.kT0, s_.kicks);
-    s_.impulse = impulse_of(s_.cfg);
-    if (s_.p.size() != s_.n) throw InvalidInput("checkpoint: particle count does not match");
-  }
+  void io(Archive& a);
   /// "dsmc D=3 model=hs species=0": what a checkpoint must match.
   static std::string identity() {
     return "dsmc D=" + std::to_string(D) + " model=" + std::string(Model::name) +
@@ -135,55 +124,14 @@ class Engine {
   /// slot (hypergas/tally/tally.hpp), then installs what obs.request asks for: a tally so
   /// installed is kept up to date by every later collision. Changes nothing in the
   /// trajectory.
-  void observe(Observer& obs) {
-    Snapshot snap = make_snapshot(s_.p);
-    snap.time = s_.time;
-    snap.collisions = s_.collisions;
-    snap.collisions_per_particle = collisions_per_particle();
-    // A granular gas's temperature changes between rows: its moments come from a pass.
-    snap.tally = s_.impulse == 1.0 ? &s_.tally : nullptr;
-    snap.log_velocity_scale = s_.log_scale;
-    snap.real_time = real_time();
-    if constexpr (F.species) {
-      int ns = 1;
-      for (int k = 0; k < max_species; ++k) s_.species_w[k] = s_.p.species_inv_mass(k);
-      for (std::size_t i = 0; i < s_.p.size(); ++i) ns = std::max(ns, s_.p.species(i) + 1);
-      snap.species = s_.p.species_data().data();
-      snap.species_inv_mass = s_.species_w.data();
-      snap.n_species = ns;
-    }
-    obs.observe(snap);
-    tally::Requests r;
-    obs.request(r);
-    if (snap.tally) s_.tally.apply(r);
-  }
+  void observe(Observer& obs);
 
   /// Advances the process to time t (mean collision times; engine_concept.hpp). With an
   /// observer, calls obs->observe at the instants of Schedule::make(time(), t, every)
   /// (schedule.hpp: evenly spaced, the last at t; an instant observed by the previous call
   /// is not observed again). Throws InvalidInput if t is not finite or before
   /// time(), or if obs is set and every is not finite and > 0.
-  void run_until(double t, Observer* obs = nullptr, double every = 0.0) {
-    if (obs && !(every > 0.0 && std::isfinite(every)))
-      throw InvalidInput("DSMC: observation interval must be finite and > 0");
-    if (!std::isfinite(t)) throw InvalidInput("DSMC: end time must be finite");
-    if (t < s_.time)
-      throw InvalidInput("DSMC: run_until(" + std::to_string(t) + "): the gas is already at t = " +
-                         std::to_string(s_.time));
-    if (!obs) {
-      advance_to(t);
-      return;
-    }
-    const Schedule plan = Schedule::make(s_.time, t, every);
-    for (std::uint64_t k = 0; k <= plan.intervals(); ++k) {
-      advance_to(plan.time(k));
-      if (s_.observed_at != s_.time) {
-        observe(*obs);
-        s_.observed_at = s_.time;
-      }
-    }
-    advance_to(t);
-  }
+  void run_until(double t, Observer* obs = nullptr, double every = 0.0);
 
   /// Current time (mean collision times; with restitution < 1 and no drive, of the gas at
   /// its current temperature: dsmc/granular.hpp).
@@ -257,31 +205,8 @@ class Engine {
  private:
   /// The common start: `given` particles must be at zero total momentum (sampled initial
   /// states are, by construction).
-  Engine(const Config& cfg, ParticlesT particles, bool given)
-      : s_(cfg, make_model(cfg), std::move(particles)) {
-    s_.cfg.n = s_.p.size();
-    validate(s_.cfg);  // also checks 2 <= n < 2^32
-    if (given) require_zero_momentum(s_.p);
-    s_.n = static_cast<std::uint32_t>(s_.p.size());
-    s_.c = dsmc::rate_constant(s_.p, s_.model.exponent());
-    s_.kT0 = equilibrium_temperature(s_.p);
-    s_.impulse = impulse_of(cfg);
-    if (cfg.drive != Drive::none && !Model::supports_drive)
-      throw InvalidInput("DSMC: the white-noise drive is defined for hard spheres (--model hs)");
-    if (cfg.drive != Drive::none && D < 2)
-      throw InvalidInput("DSMC: the white-noise drive needs D >= 2 (its strength comes from the "
-                         "Sonine theory of D >= 2)");
-    detail::advise_huge_pages(s_.p.velocity_data().data(),
-                              s_.p.velocity_data().size() * sizeof(double));
-    detail::retune(s_, true);
-  }
-  static ParticlesT initial_particles(const Config& cfg) {
-    validate(cfg);
-    ParticlesT p(cfg.n);
-    Rng r = Rng(cfg.seed).split(1);
-    initialize_velocities(p, cfg.init, r, cfg.initial);
-    return p;
-  }
+  Engine(const Config& cfg, ParticlesT particles, bool given);
+  static ParticlesT initial_particles(const Config& cfg);
   /// The factor (1 + alpha)/2 of the collisions' impulse (State::impulse: derived, not saved).
   static double impulse_of(const Config& cfg) { return restitution_impulse(cfg.restitution); }
   static Model make_model(const Config& cfg) {
@@ -296,5 +221,112 @@ class Engine {
   detail::ParallelBlocks blocks_;  // the thread team and its lanes (not state)
   std::function<void()> poll_;     // set_poll (not state)
 };
+
+// The members that run the gas, defined out of the class: not inline, so a file that sees
+// the engine declared extern (hypergas/engines.hpp) calls the engines library's copy
+// instead of compiling the candidate loop again.
+
+template <int D, class Model, Features F>
+  requires Dimension<D> && CollisionModel<Model> && (!F.positions)
+Engine<D, Model, F>::Engine(const Config& cfg, checkpoint::Reader& in)
+    : s_(cfg, make_model(cfg)) {
+  io(in);
+}
+
+template <int D, class Model, Features F>
+  requires Dimension<D> && CollisionModel<Model> && (!F.positions)
+template <class Archive>
+void Engine<D, Model, F>::io(Archive& a) {
+  static_assert(std::is_trivially_copyable_v<Rng> && std::is_trivially_copyable_v<Model> &&
+                std::is_trivially_copyable_v<Config>);
+  a.tag(identity());
+  a(s_.cfg, s_.p, s_.model, s_.rng, s_.n, s_.c, s_.lambda, s_.bound, s_.raise_to, s_.time,
+    s_.observed_at);
+  a(s_.collisions, s_.candidates, s_.since_scan, s_.self_check, s_.check_failures,
+    s_.species_w);
+  a(s_.log_scale, s_.real_time, s_.kT0, s_.kicks);
+  s_.impulse = impulse_of(s_.cfg);
+  if (s_.p.size() != s_.n) throw InvalidInput("checkpoint: particle count does not match");
+}
+
+template <int D, class Model, Features F>
+  requires Dimension<D> && CollisionModel<Model> && (!F.positions)
+void Engine<D, Model, F>::observe(Observer& obs) {
+  Snapshot snap = make_snapshot(s_.p);
+  snap.time = s_.time;
+  snap.collisions = s_.collisions;
+  snap.collisions_per_particle = collisions_per_particle();
+  // A granular gas's temperature changes between rows: its moments come from a pass.
+  snap.tally = s_.impulse == 1.0 ? &s_.tally : nullptr;
+  snap.log_velocity_scale = s_.log_scale;
+  snap.real_time = real_time();
+  if constexpr (F.species) {
+    int ns = 1;
+    for (int k = 0; k < max_species; ++k) s_.species_w[k] = s_.p.species_inv_mass(k);
+    for (std::size_t i = 0; i < s_.p.size(); ++i) ns = std::max(ns, s_.p.species(i) + 1);
+    snap.species = s_.p.species_data().data();
+    snap.species_inv_mass = s_.species_w.data();
+    snap.n_species = ns;
+  }
+  obs.observe(snap);
+  tally::Requests r;
+  obs.request(r);
+  if (snap.tally) s_.tally.apply(r);
+}
+
+template <int D, class Model, Features F>
+  requires Dimension<D> && CollisionModel<Model> && (!F.positions)
+void Engine<D, Model, F>::run_until(double t, Observer* obs, double every) {
+  if (obs && !(every > 0.0 && std::isfinite(every)))
+    throw InvalidInput("DSMC: observation interval must be finite and > 0");
+  if (!std::isfinite(t)) throw InvalidInput("DSMC: end time must be finite");
+  if (t < s_.time)
+    throw InvalidInput("DSMC: run_until(" + std::to_string(t) + "): the gas is already at t = " +
+                       std::to_string(s_.time));
+  if (!obs) {
+    advance_to(t);
+    return;
+  }
+  const Schedule plan = Schedule::make(s_.time, t, every);
+  for (std::uint64_t k = 0; k <= plan.intervals(); ++k) {
+    advance_to(plan.time(k));
+    if (s_.observed_at != s_.time) {
+      observe(*obs);
+      s_.observed_at = s_.time;
+    }
+  }
+  advance_to(t);
+}
+
+template <int D, class Model, Features F>
+  requires Dimension<D> && CollisionModel<Model> && (!F.positions)
+Engine<D, Model, F>::Engine(const Config& cfg, ParticlesT particles, bool given)
+    : s_(cfg, make_model(cfg), std::move(particles)) {
+  s_.cfg.n = s_.p.size();
+  validate(s_.cfg);  // also checks 2 <= n < 2^32
+  if (given) require_zero_momentum(s_.p);
+  s_.n = static_cast<std::uint32_t>(s_.p.size());
+  s_.c = dsmc::rate_constant(s_.p, s_.model.exponent());
+  s_.kT0 = equilibrium_temperature(s_.p);
+  s_.impulse = impulse_of(cfg);
+  if (cfg.drive != Drive::none && !Model::supports_drive)
+    throw InvalidInput("DSMC: the white-noise drive is defined for hard spheres (--model hs)");
+  if (cfg.drive != Drive::none && D < 2)
+    throw InvalidInput("DSMC: the white-noise drive needs D >= 2 (its strength comes from the "
+                       "Sonine theory of D >= 2)");
+  detail::advise_huge_pages(s_.p.velocity_data().data(),
+                            s_.p.velocity_data().size() * sizeof(double));
+  detail::retune(s_, true);
+}
+
+template <int D, class Model, Features F>
+  requires Dimension<D> && CollisionModel<Model> && (!F.positions)
+auto Engine<D, Model, F>::initial_particles(const Config& cfg) -> ParticlesT {
+  validate(cfg);
+  ParticlesT p(cfg.n);
+  Rng r = Rng(cfg.seed).split(1);
+  initialize_velocities(p, cfg.init, r, cfg.initial);
+  return p;
+}
 
 }  // namespace hypergas::dsmc

@@ -73,37 +73,17 @@ class Engine {
   /// Places cfg.n particles on a lattice at packing cfg.packing, draws velocities in state
   /// cfg.init, compresses (Lubachevsky–Stillinger) if the lattice is too tight, and predicts
   /// all events. Throws InvalidInput for bad parameters or a box below 2 diameters.
-  explicit Engine(const Config& cfg) : debug_(cfg.debug_overlap), cfg_(cfg) {
-    s_.setup(cfg);
-    const std::size_t n = cfg.n;
-    reorder_every_ = cfg.reorder_interval > 0.0
-                         ? static_cast<std::uint64_t>(cfg.reorder_interval * 0.5 * n) + 1
-                         : ~std::uint64_t{0};
-    rebuild();
-    if (s_.scale_ref < 1.0) {
-      compress(*this, 1.0, cfg);  // elastic: alpha_ is 1 until set below
-      restart_clock();  // the compression is preparation: the run starts at t = 0
-    }
-    tc_ = cfg.tc_time;
-    set_restitution(cfg.restitution);
-    reset_observables();
-  }
+  explicit Engine(const Config& cfg);
 
   /// Restores an engine saved by io() (hypergas/checkpoint.hpp): the same state, the same
   /// event calendar, so that it continues bit for bit as the saved one would have. Throws
   /// InvalidInput if the file holds another engine, dimension or feature set.
-  Engine(const Config& cfg, checkpoint::Reader& in) : debug_(cfg.debug_overlap), cfg_(cfg) {
-    io(in);
-  }
+  Engine(const Config& cfg, checkpoint::Reader& in);
 
   /// Saves or restores the complete engine state (every array, the calendar's links, the
   /// counters and the measurement window); the scans' scratch is not state.
   template <class Archive>
-  void io(Archive& a) {
-    a.tag(identity());
-    a(static_cast<State<D, F>&>(s_), scanner_, q_, win_, reorder_every_, next_reorder_, cfg_,
-      alpha_, tc_);
-  }
+  void io(Archive& a);
   /// "edmd D=3 scan=horizon species=0 masses=0 radii=0": what a checkpoint must match
   /// (docs/checkpoints.md; particles have neither masses nor radii of their own).
   static std::string identity() {
@@ -117,46 +97,12 @@ class Engine {
   /// evenly spaced from the time at the call, the last at t) with velocities and unwrapped
   /// positions. Throws InvalidInput if t is not finite or t < time(), or if obs is non-null
   /// and `every` is not finite and > 0.
-  void run_until(double t, Observer* obs = nullptr, double every = 0.0) {
-    if (obs && !(every > 0.0 && std::isfinite(every)))
-      throw InvalidInput("sampling interval must be finite and > 0");
-    if (!std::isfinite(t))
-      throw InvalidInput("run_until(" + std::to_string(t) + "): the time must be finite");
-    if (!(t >= s_.now))
-      throw InvalidInput("run_until(" + std::to_string(t) + "): the gas is already at t = " +
-                         std::to_string(s_.now));
-    const Schedule plan = obs ? Schedule::make(s_.now, t, every) : Schedule{};
-    std::uint64_t k = 0;
-    double next_sample = obs ? plan.time(0) : never;
-    for (;;) {
-      const double te = q_.top_time();
-      while (obs && next_sample <= te) {
-        sample(next_sample, *obs);
-        next_sample = ++k <= plan.intervals() ? plan.time(k) : never;
-      }
-      if (te > t) break;
-      // an observer may install a Helfand tally at a sample: the loop then changes kernel
-      if (contacts_.helfand) [[unlikely]] {
-        refuse_tally_if_granular();
-        events_until<true>(t, next_sample);
-      } else {
-        events_until<false>(t, next_sample);
-      }
-    }
-    s_.now = t;
-  }
+  void run_until(double t, Observer* obs = nullptr, double every = 0.0);
   /// Calls obs with the state at time() (velocities and unwrapped positions, original
   /// numbering); changes nothing.
-  void observe(Observer& obs) const { sample(s_.now, obs); }
+  void observe(Observer& obs) const;
   /// Processes exactly one event (a collision, a cell crossing or a re-prediction).
-  void step() {
-    if (contacts_.helfand) {
-      refuse_tally_if_granular();
-      step_event<true>();
-    } else {
-      step_event<false>();
-    }
-  }
+  void step();
 
   /// The Helfand tally's slot (tally/helfand.hpp): a recorder installs a tally through a
   /// snapshot (Snapshot::contacts), and every later collision updates it. Not state: a
@@ -420,6 +366,86 @@ class Engine {
   double tc_ = 0.0;     // TC model's t_c
   mutable tally::ContactSlot contacts_;  // the Helfand tally, if a recorder installed one
 };
+
+// The members that start, save and run the gas, defined out of the class: not inline, so
+// a file that sees the engine declared extern (hypergas/engines.hpp) calls the engines
+// library's copy instead of compiling the event loop again.
+
+template <int D, Features F, class Scan>
+Engine<D, F, Scan>::Engine(const Config& cfg) : debug_(cfg.debug_overlap), cfg_(cfg) {
+  s_.setup(cfg);
+  const std::size_t n = cfg.n;
+  reorder_every_ = cfg.reorder_interval > 0.0
+                       ? static_cast<std::uint64_t>(cfg.reorder_interval * 0.5 * n) + 1
+                       : ~std::uint64_t{0};
+  rebuild();
+  if (s_.scale_ref < 1.0) {
+    compress(*this, 1.0, cfg);  // elastic: alpha_ is 1 until set below
+    restart_clock();  // the compression is preparation: the run starts at t = 0
+  }
+  tc_ = cfg.tc_time;
+  set_restitution(cfg.restitution);
+  reset_observables();
+}
+
+template <int D, Features F, class Scan>
+Engine<D, F, Scan>::Engine(const Config& cfg, checkpoint::Reader& in)
+    : debug_(cfg.debug_overlap), cfg_(cfg) {
+  io(in);
+}
+
+template <int D, Features F, class Scan>
+template <class Archive>
+void Engine<D, F, Scan>::io(Archive& a) {
+  a.tag(identity());
+  a(static_cast<State<D, F>&>(s_), scanner_, q_, win_, reorder_every_, next_reorder_, cfg_,
+    alpha_, tc_);
+}
+
+template <int D, Features F, class Scan>
+void Engine<D, F, Scan>::run_until(double t, Observer* obs, double every) {
+  if (obs && !(every > 0.0 && std::isfinite(every)))
+    throw InvalidInput("sampling interval must be finite and > 0");
+  if (!std::isfinite(t))
+    throw InvalidInput("run_until(" + std::to_string(t) + "): the time must be finite");
+  if (!(t >= s_.now))
+    throw InvalidInput("run_until(" + std::to_string(t) + "): the gas is already at t = " +
+                       std::to_string(s_.now));
+  const Schedule plan = obs ? Schedule::make(s_.now, t, every) : Schedule{};
+  std::uint64_t k = 0;
+  double next_sample = obs ? plan.time(0) : never;
+  for (;;) {
+    const double te = q_.top_time();
+    while (obs && next_sample <= te) {
+      sample(next_sample, *obs);
+      next_sample = ++k <= plan.intervals() ? plan.time(k) : never;
+    }
+    if (te > t) break;
+    // an observer may install a Helfand tally at a sample: the loop then changes kernel
+    if (contacts_.helfand) [[unlikely]] {
+      refuse_tally_if_granular();
+      events_until<true>(t, next_sample);
+    } else {
+      events_until<false>(t, next_sample);
+    }
+  }
+  s_.now = t;
+}
+
+template <int D, Features F, class Scan>
+void Engine<D, F, Scan>::observe(Observer& obs) const {
+  sample(s_.now, obs);
+}
+
+template <int D, Features F, class Scan>
+void Engine<D, F, Scan>::step() {
+  if (contacts_.helfand) {
+    refuse_tally_if_granular();
+    step_event<true>();
+  } else {
+    step_event<false>();
+  }
+}
 
 }  // namespace hypergas::edmd
 

@@ -6,6 +6,7 @@
 #   transport_dsmc.gp   transport.png (DSMC --transport)
 #   transport_edmd.gp   transport.png (EDMD --transport)
 #   structure.gp        structure.png (EDMD --structure)
+#   histograms.gp       speed_histograms.png (--histogram-every)
 # By hand: cd RUN && cat plot_run.gp run/moments.gp run/vacf.gp | gnuplot
 # Reads the CSV files by column name (gnuplot >= 5.0).
 set terminal pngcairo size 900,600 font ',11'

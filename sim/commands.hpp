@@ -33,8 +33,9 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume = nullptr, bool 
 
 /// Options of `hypergas resume`.
 struct ResumeOptions {
-  std::string dir;    ///< the output folder of the stopped run
-  bool json = false;  ///< print the summary as JSON, as `run --json`
+  std::string dir;     ///< the output folder of the stopped run
+  bool json = false;   ///< print the summary as JSON, as `run --json`
+  double until = 0.0;  ///< continue to this time instead of the run's own (0: its own)
 };
 /// Registers `hypergas resume` on `app`, writing into `o`; returns the subcommand.
 CLI::App* add_resume_command(CLI::App& app, ResumeOptions& o);

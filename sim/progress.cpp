@@ -53,6 +53,18 @@ void Progress::update(double done) {
   drawn_ = true;
 }
 
+SetupLine::SetupLine(const std::string& text, bool show) : on_(show && Progress::enabled()) {
+  if (!on_) return;
+  fmt::print(stderr, "\r{} ...", text);
+  std::fflush(stderr);
+}
+
+SetupLine::~SetupLine() {
+  if (!on_) return;
+  fmt::print(stderr, "\r\033[K");
+  std::fflush(stderr);
+}
+
 void Progress::finish() {
   if (!on_ || !drawn_) return;
   fmt::print(stderr, "\r\033[K");  // carriage return, erase the line

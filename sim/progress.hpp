@@ -29,6 +29,21 @@ class Progress {
   std::chrono::steady_clock::time_point start_, last_;
 };
 
+/// While it lives, one stderr line saying what a run is setting up before its first
+/// collision (`label: setting up ...`: the lattice start and its compression, the initial
+/// velocities), which can take as long as the run; cleared when done. Only on a terminal,
+/// as the bar; the time it took is the summary's setup_s.
+class SetupLine {
+ public:
+  SetupLine(const std::string& text, bool show);
+  ~SetupLine();
+  SetupLine(const SetupLine&) = delete;
+  SetupLine& operator=(const SetupLine&) = delete;
+
+ private:
+  bool on_;
+};
+
 /// Set by SIGINT/SIGTERM once `install_interrupt_handler` ran; long loops poll it and
 /// throw Interrupted so that output folders are cleaned up.
 bool interrupted();

@@ -5,7 +5,8 @@
 // staging; summary.json and the PNG plots follow; only then are the files moved into
 // place. Any exception before the commit leaves the folder as it was, except for the
 // checkpoint (checkpoint.hgck, written atomically during the run), which a finished run
-// removes.
+// removes. A run with --checkpoint-every or --checkpoint-wall keeps its final state as
+// final.hgck, one of its files.
 #include <chrono>
 #include <filesystem>
 
@@ -34,8 +35,13 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume, bool quiet) {
   const bool edmd = o.engine_kind() == registry::EngineKind::edmd;
   RunContext ctx;
   // no checkpoint, not even at Ctrl-C, for replicas or an output a checkpoint cannot hold
-  if (checkpointable(o))
+  if (checkpointable(o)) {
     ctx.checkpoints = Checkpointer(out.dir(), o.checkpoint_every, o.checkpoint_wall_seconds());
+    // a run that asked for checkpoints keeps its final state, committed with its files:
+    // `hypergas resume DIR --until T` continues it
+    if (o.checkpoint_every > 0.0 || !o.checkpoint_wall.empty())
+      ctx.checkpoints.keep_final(out.staged(Checkpointer::final_name));
+  }
   ctx.resume = resume;
   // gnuplot starts now, so that its start overlaps the run (its script follows the CSVs)
   studies::GnuplotProcess plot(out.staging());
@@ -63,9 +69,9 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume, bool quiet) {
              f("engine"), f("dim"), f("model"), f("n"), f("seed"), f("collisions"), f("wall_s"),
              f("collisions_per_s"));
   const bool granular = o.restitution != 1.0;
-  fmt::print("  final kurtosis_x {} (MB 3), KS p-value of speeds {}{}, energy drift {}, "
+  fmt::print("  final kurtosis_x {} +- {} (MB 3), KS p-value of speeds {}{}, energy drift {}, "
              "momentum drift {}\n",
-             f("kurtosis_x"), f("ks_p_speed"),
+             f("kurtosis_x"), f("kurtosis_x_error"), f("ks_p_speed"),
              granular ? " (against MB: a cooling gas is not Maxwellian)" : "",
              f("energy_rel_drift"), f("momentum_drift"));
   if (granular) {

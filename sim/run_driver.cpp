@@ -14,18 +14,15 @@ std::optional<Stop> RunPlan::stop(std::uint64_t k) const {
   const auto w = static_cast<std::uint64_t>(warmup_stops);
   const double t0 = sampling.t0();
   if (k + 1 < w) return Stop{t0 * static_cast<double>(k + 1) / warmup_stops, false, false};
-  if (k + 1 == w) return Stop{t0, true, true};
-  if (w == 0 && substeps > 1) {
-    const std::uint64_t m = k / substeps, j = k % substeps;
-    if (m > sampling.intervals() || (m == sampling.intervals() && j > 0)) return std::nullopt;
-    if (j == 0) return Stop{sampling.time(m), false, true, true};
-    const double a = sampling.time(m), b = sampling.time(m + 1);
-    return Stop{a + (b - a) * static_cast<double>(j) / static_cast<double>(substeps), false,
-                false, true};
-  }
-  const std::uint64_t m = w > 0 ? k - w + 1 : k;
-  if (m > sampling.intervals()) return std::nullopt;
-  return Stop{sampling.time(m), false, true, w == 0};
+  // f: the stop's place on the fine grid from t0 (the last equilibration stop is its first)
+  const std::uint64_t f = w > 0 ? k + 1 - w : k;
+  const std::uint64_t m = f / substeps, j = f % substeps;
+  if (m > sampling.intervals() || (m == sampling.intervals() && j > 0)) return std::nullopt;
+  const bool start = w > 0 && f == 0;
+  if (j == 0) return Stop{sampling.time(m), start, true, true};
+  const double a = sampling.time(m), b = sampling.time(m + 1);
+  return Stop{a + (b - a) * static_cast<double>(j) / static_cast<double>(substeps), false, false,
+              true};
 }
 
 Checkpointer::Checkpointer(std::filesystem::path dir, double every, double wall_s)

@@ -7,6 +7,9 @@
 //   EDMD  ten equilibration stops at t_eq (k + 1) / 10 without sampling, the last of which
 //         (t_eq) starts the measurement window and takes the first sample; then the
 //         Schedule's instants from t_eq to `until`.
+// Between two sampling instants an output may ask for a finer grid (RunPlan::substeps: the
+// correlations of DSMC --transport, the EDMD VACF), whose stops observe its fine observers
+// only; every sampling instant is also a stop of the fine grid.
 // Stopping an engine at a time and going on does not change its trajectory where the plan
 // puts the stops: DSMC stops only at its sampling grid (an epoch of the exact scheme ends at
 // each grid point in any case); EDMD processes the same events in the same order whatever
@@ -36,15 +39,16 @@ struct Stop {
   double time = 0.0;
   bool start_window = false;
   bool sample = false;
-  bool fine = false;  ///< a stop of the fine grid (DSMC with substeps, --transport)
+  bool fine = false;  ///< a stop of the fine grid (RunPlan::substeps)
 };
 
 /// The stops of a run (see the file comment).
 struct RunPlan {
   Schedule sampling;         ///< the sampled instants, sampling.t0() .. sampling.until()
   int warmup_stops = 0;      ///< EDMD: equilibration stops (the last one samples), DSMC: 0
-  /// DSMC: fine stops per sampling interval (evenly spaced; the first is the sampling
-  /// instant): the grid of --transport. 1: the sampling instants only.
+  /// Fine stops per sampling interval (evenly spaced; the first is the sampling instant),
+  /// set by the outputs that sample faster than --every (DSMC --transport, the EDMD
+  /// VACF). 1: the sampling instants only.
   std::uint64_t substeps = 1;
   /// EDMD granular run: the restitution the engine gets after each sample (the first at
   /// the end of the equilibration, which runs elastic): the cooling starts from the
@@ -94,10 +98,24 @@ class Checkpointer {
   std::filesystem::path path() const { return dir_ / file_name; }
   const std::filesystem::path& dir() const { return dir_; }
 
+  /// Also writes the state at the end of the run to `file` (a finished run that
+  /// `hypergas resume DIR --until T` can continue); empty: not.
+  void keep_final(std::filesystem::path file) { final_ = std::move(file); }
+  /// Writes the final state, if kept (keep_final).
+  template <class Save>
+  void write_final(Save&& save) const {
+    if (final_.empty()) return;
+    checkpoint::Writer w(final_.string());
+    save(w);
+    w.commit();
+  }
+
   static constexpr const char* file_name = "checkpoint.hgck";
+  /// The state a finished run keeps when it was checkpointed (run_command.cpp).
+  static constexpr const char* final_name = "final.hgck";
 
  private:
-  std::filesystem::path dir_;
+  std::filesystem::path dir_, final_;
   double every_ = 0.0, wall_s_ = 0.0;
   std::chrono::steady_clock::time_point last_wall_ = std::chrono::steady_clock::now();
 };
@@ -112,7 +130,8 @@ struct InterruptedWithCheckpoint {
 /// after each stop writes a checkpoint through ck when due (save(writer) writes it, with
 /// `st` already updated). Ends with the engine at plan.until. Throws
 /// InterruptedWithCheckpoint (checkpointing on) or Interrupted (off) after SIGINT/SIGTERM.
-/// `fine`, if set, observes at every stop of the fine grid (RunPlan::substeps).
+/// `fine`, if set, observes at every stop of the fine grid (RunPlan::substeps). At the end
+/// writes the final state through ck when it keeps it (Checkpointer::keep_final).
 template <class Engine, class Save>
 void drive(Engine& engine, const RunPlan& plan, DriverState& st, Observer& obs,
            Checkpointer& ck, Save&& save, Observer* fine = nullptr) {
@@ -148,6 +167,7 @@ void drive(Engine& engine, const RunPlan& plan, DriverState& st, Observer& obs,
   const auto t0 = Clock::now();
   engine.run_until(plan.sampling.until());
   st.engine_s += std::chrono::duration<double>(Clock::now() - t0).count();
+  ck.write_final(save);
 }
 
 /// "hypergas <version> (<compiler>)": a checkpoint is continued only by the same build.

@@ -9,6 +9,8 @@
 #include <optional>
 #include <vector>
 
+#include <fmt/core.h>
+
 #include "engine_runs.hpp"
 #include "hypergas/analysis/estimates.hpp"
 #include "hypergas/conserved.hpp"
@@ -72,7 +74,13 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
   if (k == 1) {
     std::optional<Engine> engine;
     Conserved<Engine::dim> c0;
-    body(0, start_engine(engine, cfg, ctx, st0, c0, rec.outputs), st0, c0, ctx.checkpoints);
+    {
+      const SetupLine line(fmt::format("dsmc: setting up {} particles ({} velocities)", o.n,
+                                       o.init),
+                           progress && !ctx.resume);
+      start_engine(engine, cfg, ctx, st0, c0, rec.outputs);
+    }
+    body(0, *engine, st0, c0, ctx.checkpoints);
   } else {
     studies::run_replicas<Engine>(
         cfg, k, o.threads == 1 ? k : 1,

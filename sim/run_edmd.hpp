@@ -24,8 +24,8 @@
 
 namespace hypergas::cli::detail {
 
-/// Fraction of [0, until] spent equilibrating the lattice start before sampling, and the
-/// stops (checkpoint opportunities) in it.
+/// Fraction of [0, until] spent equilibrating the lattice start before sampling (unless
+/// --equilibration says), and the stops (checkpoint opportunities) in it.
 inline constexpr double equilibration_fraction = 0.2;
 inline constexpr int equilibration_stops = 10;
 
@@ -36,7 +36,7 @@ RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
   using Clock = std::chrono::steady_clock;
   const edmd::Config cfg = edmd_config(o);
   const double until = o.until;
-  const double t_eq = equilibration_fraction * until;
+  const double t_eq = o.equilibration > 0.0 ? o.equilibration : equilibration_fraction * until;
   RunPlan plan{.sampling = o.schedule(t_eq), .warmup_stops = equilibration_stops, .substeps = 1,
                .quench = {}};
   const bool granular = o.restitution != 1.0;
@@ -52,7 +52,14 @@ RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
   std::optional<Engine> e;
   edmd::Config elastic = cfg;
   elastic.restitution = 1.0;  // the equilibration
-  Engine& engine = start_engine(e, elastic, ctx, st, c0, rec.outputs);
+  Engine& engine = [&]() -> Engine& {
+    const SetupLine line(fmt::format("edmd: setting up {} particles at packing {} (lattice "
+                                     "start{})",
+                                     o.n, o.packing,
+                                     o.was_given("--start-packing") ? ", compression" : ""),
+                         progress && !ctx.resume);
+    return start_engine(e, elastic, ctx, st, c0, rec.outputs);
+  }();
   const double setup_s = std::chrono::duration<double>(Clock::now() - t0).count();
   // a lattice start with vacancies (N below the lattice's sites) is said, not hidden
   const std::uint64_t side = edmd::lattice_side(D, static_cast<std::size_t>(o.n));
@@ -70,7 +77,8 @@ RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
   }
   RunObserver obs(samplers(rec.outputs), "edmd", until, progress);
   const auto save = [&](checkpoint::Writer& w) { save_run(w, o, st, c0, engine, rec.outputs); };
-  drive(engine, plan, st, obs, ctx.checkpoints, save);
+  FanOut fine(fine_observers(rec.outputs));
+  drive(engine, plan, st, obs, ctx.checkpoints, save, fine.empty() ? nullptr : &fine);
   const auto t2 = Clock::now();
   const auto c1 = conserved(engine.particles());
 

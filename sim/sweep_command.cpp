@@ -13,6 +13,7 @@
 // continue from their checkpoints or start again, and since every case is a deterministic
 // run, the files are those of a sweep never stopped.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -21,6 +22,8 @@
 #include <fmt/core.h>
 
 #include "commands.hpp"
+#include "engine_runs.hpp"
+#include "hypergas/options/suggest.hpp"
 #include "hypergas/analysis/output.hpp"
 #include "hypergas/error.hpp"
 #include "locked_dir.hpp"
@@ -125,6 +128,26 @@ class SweepDir {
 
 /// Runs case c in this process: from its checkpoint where it has one written by this build
 /// for these options, else from the start.
+/// Refuses a plan whose plot names no column of sweep.csv before any case runs: the keys
+/// come from a pilot of the first case with at most 1000 particles, one replica, one thread,
+/// and (without --transport, whose correlations need their span) until at most 1, which
+/// writes nothing; a case of the plan writes the same keys.
+void check_plot_key(const sweep::Plan& plan, RunOptions o) {
+  o.n = std::min(o.n, 1000LL);
+  o.replicas = 1;
+  o.threads = 1;
+  if (!o.transport) o.until = std::min(o.until, 1.0);
+  o.every = 0.0;
+  const RunRecord rec = simulate(o, false);
+  std::vector<std::string> keys;
+  for (const auto& [k, v] : rec.summary) keys.push_back(k);
+  keys = sweep::table_keys(keys);
+  if (std::find(keys.begin(), keys.end(), plan.plot_y) == keys.end())
+    throw InvalidInput(fmt::format("sweep: plot = \"{}\" is not a column of sweep.csv (a "
+                                   "summary key of the cases){}",
+                                   plan.plot_y, options::did_you_mean(plan.plot_y, keys, "\"")));
+}
+
 void run_case(const Case& c) {
   const fs::path ck = fs::path(c.options.out) / Checkpointer::file_name;
   std::error_code ec;
@@ -208,6 +231,7 @@ int sweep_command(const SweepOptions& opt, const ranks::Session& session) {
     const std::string text = read_text(plan_file, "plan");
     plan = sweep::parse_plan(text, plan_file.string());
     cases = sweep::make_cases(plan, dir);
+    if (root && !plan.plot_y.empty() && !cases.empty()) check_plot_key(plan, cases.front().options);
     if (root) hold.emplace(dir, text, cases, plan_file);
   } catch (const InvalidInput& e) {
     error = e.what();

@@ -11,6 +11,7 @@
 // request, not a write into the engine.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -31,7 +32,9 @@ struct Requests;
 /// observer call. Velocity of particle i, component k: velocities[i * stride + k].
 struct Snapshot {
   int dim = 0;        ///< D
-  std::size_t n = 0;  ///< number of particles
+  /// Number of particles in the snapshot: all of them, or, where the engine builds the
+  /// snapshot as a copy (EDMD), the first Observer::particles_read() in its numbering.
+  std::size_t n = 0;
   int stride = 0;     ///< doubles per particle in velocities / positions
   double time = 0.0;  ///< engine time (DSMC: mean collision times; EDMD: sigma sqrt(m/kT))
   double collisions_per_particle = 0.0;  ///< 2 * collisions / n so far
@@ -82,6 +85,10 @@ class Observer {
   /// engine to keep from now on (tally/tally.hpp: Requests); the engine applies `r` once
   /// every observer of the snapshot has returned. Asks for nothing by default.
   virtual void request(tally::Requests& r) { (void)r; }
+  /// How many particles, the first ones in the engine's original numbering, this observer
+  /// reads: an engine that copies the state to build a snapshot (EDMD) may copy only these
+  /// (Snapshot::n). All of them by default.
+  virtual std::size_t particles_read() const { return std::numeric_limits<std::size_t>::max(); }
 };
 
 /// Hands each snapshot, and then each request, to `targets` in order.
@@ -93,6 +100,11 @@ class FanOut final : public Observer {
   }
   void request(tally::Requests& r) override {
     for (Observer* t : targets_) t->request(r);
+  }
+  std::size_t particles_read() const override {
+    std::size_t n = 0;
+    for (const Observer* t : targets_) n = std::max(n, t->particles_read());
+    return n;
   }
   bool empty() const { return targets_.empty(); }
 

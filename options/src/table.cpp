@@ -58,6 +58,8 @@ const Option table[] = {
   {"init", 0, E::both, U::engine, &R::init, {}, check_init, inits_help, "", "initial velocities:", "", true, false},
   {"until", 0, E::both, U::span, &R::until, {pos_open, 1e12, true, false, "a finite time > 0 and at most 1e12"}, nullptr, nullptr, time_unit, "end time", "", false, false},
   {"every", 0, E::both, U::span, &R::every, {pos_open, 1e308, true, false, "a finite interval > 0"}, nullptr, nullptr, time_unit, "sampling interval, rounded so that it divides the sampled span: the rows are evenly spaced and the last is at --until (include/hypergas/schedule.hpp)", "until/50", false, false},
+  {"equilibration", 0, E::edmd, U::command, &R::equilibration, {pos_open, 1e12, true, false, "a finite time > 0, below --until"}, nullptr, nullptr, time_unit, "time the start equilibrates before sampling begins: the measurement window (Z, collision rate, the outputs) is [T, --until]", "until/5", false, false},
+  {"histogram-every", 0, E::both, U::command, &R::histogram_every, {pos_open, 1e308, true, false, "a finite interval > 0"}, nullptr, nullptr, time_unit, "also write speed_histograms.csv (and speed_histograms.png): the speed histogram at every m-th sampling instant from the first, m = round(T / sampling interval), at least 1", "off", false, false},
   {"restitution", 0, E::both, U::engine, &R::restitution, {0, 1, false, false, "in [0, 1]"}, nullptr, nullptr, "", "coefficient of normal restitution alpha: each collision's impulse along the normal is scaled by (1 + alpha)/2 and the gas cools (granular gas; 1 = elastic). dsmc: the freely cooling gas is kept in scaled velocities, time runs in mean collision times at the current temperature, and moments.csv gives T and real_time (docs/validation.md)", "", false, false},
   {"drive", 0, E::dsmc, U::engine, &R::drive, {}, check_drive, nullptr, "", "energy input of a granular gas: none (the homogeneous cooling state) or white-noise (random kicks that hold the first-Sonine temperature at --temperature; hard spheres, --restitution < 1)", "", false, false},
   {"drive-dt", 0, E::dsmc, U::engine, &R::drive_dt, {pos_open, 1, true, false, "a finite interval > 0 and at most 1"}, nullptr, nullptr, "mean collision times", "with --drive white-noise: interval between the kicks", "", false, false},
@@ -163,6 +165,8 @@ RunOptions defaults(registry::EngineKind e) {
   // The run's span and the command's switches.
   o.until = dsmc ? 10.0 : 20.0;
   o.every = 0.0;  // Schedule::default_intervals
+  o.histogram_every = 0.0;
+  o.equilibration = 0.0;
   o.threads = 1;
   o.replicas = 1;
   o.checkpoint_every = 0.0;

@@ -248,6 +248,9 @@ void validate(const RunOptions& o) {
   if (o.structure && (o.checkpoint_every > 0.0 || !o.checkpoint_wall.empty()))
     reject("--structure runs cannot be checkpointed: leave out --checkpoint-every and "
         "--checkpoint-wall");
+  if (edmd && o.equilibration >= o.until)
+    reject(fmt::format("--equilibration {} must be below --until {}: sampling starts after it",
+                       o.equilibration, o.until));
   if (edmd) {
     const double jam = jamming_packing(o.dim);
     if (o.packing >= jam)

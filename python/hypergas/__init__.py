@@ -19,6 +19,8 @@ command's moments.csv), :class:`MomentsRecorder` and :class:`VacfRecorder` (the 
 recorders, fed by ``run(observers=...)``), :func:`vacf`, :func:`msd`, :func:`maxwell_pdf`,
 :func:`maxwell_cdf` and :func:`report` (error against run time).
 
+Runs with files: :func:`run` is ``hypergas run`` (the same options, outputs and files).
+
 Sweeps: :func:`read_sweep` reads the tables (sweep.csv, groups.csv) of a folder written by
 ``hypergas sweep``.
 """
@@ -42,6 +44,7 @@ from ._analysis import (Analysis, Report, SpeedHistogram, analyse, maxwell_cdf, 
                         report, vacf, MomentsRecorder, VacfRecorder,
                         TransportRecorder, HelfandRecorder, StructureRecorder)
 from ._sweep import read_sweep
+from ._run import run
 from . import _hypergas
 
 models = tuple(_hypergas.model_names())
@@ -52,4 +55,4 @@ jamming_packing = _hypergas.jamming_packing
 __all__ = ["DSMC", "EDMD", "Analysis", "Report", "SpeedHistogram", "analyse", "maxwell_pdf",
            "maxwell_cdf", "vacf", "msd", "report", "MomentsRecorder", "VacfRecorder",
            "TransportRecorder", "HelfandRecorder", "StructureRecorder",
-           "read_sweep", "models", "initial_states", "schemes", "jamming_packing"]
+           "read_sweep", "run", "models", "initial_states", "schemes", "jamming_packing"]

@@ -15,5 +15,7 @@ void bind_observers(pybind11::module_& m);
 void bind_engines(pybind11::module_& m);
 /// The error-against-run-time study (bind_report.cpp).
 void bind_report(pybind11::module_& m);
+/// run_command and run_keywords: `hypergas run` from Python (bind_run.cpp).
+void bind_run(pybind11::module_& m);
 
 }  // namespace hypergas::python

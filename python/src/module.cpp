@@ -40,4 +40,5 @@ PYBIND11_MODULE(_hypergas, m) {
   bind_engines(m);
   bind_report(m);
   bind_options(m);
+  bind_run(m);
 }

@@ -13,17 +13,18 @@
 namespace hypergas::cli {
 
 namespace outputs {
-extern const OutputKind vacf, pressure, transport, helfand, structure;
+extern const OutputKind vacf, pressure, transport, helfand, structure, histograms;
 }
 
 namespace {
-const std::array<const OutputKind*, 6> kinds = {
+const std::array<const OutputKind*, 7> kinds = {
     &outputs::moments,    // moments.csv, speed_histogram.csv
     &outputs::vacf,       // vacf.csv (EDMD)
     &outputs::pressure,   // Z_error, collision_rate_error (elastic EDMD)
     &outputs::transport,  // transport.csv, correlations.csv (DSMC --transport)
     &outputs::helfand,    // transport.csv, correlations.csv (EDMD --transport)
     &outputs::structure,  // rdf.csv, structure_factor.csv (EDMD --structure)
+    &outputs::histograms, // speed_histograms.csv (--histogram-every)
 };
 }  // namespace
 

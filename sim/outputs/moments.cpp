@@ -23,8 +23,12 @@ void MomentsOutput::write(OutputDir& out) const {
 }
 
 void MomentsOutput::summarize(analysis::JsonObject& s) const {
-  for (const char* key : {"kurtosis_x", "m4_ratio", "l1_speed", "ks_p_speed", "chi2_p_speed"})
-    s.emplace_back(key, last(key));
+  // the final row's estimates, each mean with its standard error over the particles
+  s.emplace_back("kurtosis_x", last("kurtosis_x"));
+  s.emplace_back("kurtosis_x_error", last("kurtosis_x_err"));
+  s.emplace_back("m4_ratio", last("m4_ratio"));
+  s.emplace_back("m4_ratio_error", last("m4_ratio_err"));
+  for (const char* key : {"l1_speed", "ks_p_speed", "chi2_p_speed"}) s.emplace_back(key, last(key));
   if (restitution_ != 1.0)
     add_granular_summary(s, recorder_, GranularRun{dim_, restitution_, driven_, hard_spheres_},
                          dsmc_);

@@ -165,6 +165,13 @@ Fields read_summary(const fs::path& file) {
   return out;
 }
 
+std::vector<std::string> table_keys(const std::vector<std::string>& summary_keys) {
+  std::vector<std::string> out;
+  for (const auto& k : summary_keys)
+    if (!process_fields.count(k)) out.push_back(k);
+  return out;
+}
+
 Tables::Tables(const Plan& plan, const std::vector<Case>& cases, fs::path dir)
     : plan_(plan), cases_(cases), dir_(std::move(dir)), rows_(cases.size()) {}
 

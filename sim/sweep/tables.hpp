@@ -28,6 +28,10 @@ using Fields = std::vector<std::pair<std::string, std::string>>;
 /// Reads a one-level JSON object (summary.json); throws std::runtime_error naming the file.
 Fields read_summary(const std::filesystem::path& file);
 
+/// The keys of `summary` that sweep.csv holds (all but the process measures): what a plan's
+/// plot may name.
+std::vector<std::string> table_keys(const std::vector<std::string>& summary_keys);
+
 class Tables {
  public:
   Tables(const Plan& plan, const std::vector<Case>& cases, std::filesystem::path dir);

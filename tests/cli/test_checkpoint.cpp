@@ -246,6 +246,69 @@ TEST_CASE("Ctrl-C writes a checkpoint, says how to resume, and resume finishes t
   CHECK(slurp(s.path() / "ref" / "moments.csv") == slurp(s.path() / "cut" / "moments.csv"));
 }
 
+TEST_CASE("resume --until extends a finished run: the files of one run to the new end",
+          "[checkpoint]") {
+  // A run with --checkpoint-every keeps its final state (final.hgck); resume --until T goes
+  // on from it. The reference is one run to T with the stopped run's sampling interval and,
+  // for EDMD, its equilibration time, without checkpoints: every CSV file and the
+  // physics of summary.json must be the same bytes.
+  Scratch s("extend");
+  const auto check_extension = [&](const std::vector<std::string>& first, const char* until,
+                                   const std::vector<std::string>& reference,
+                                   const std::vector<std::string>& files) {
+    const auto run_ok = [&](std::vector<std::string> args, const char* folder) {
+      if (folder) {
+        args.insert(args.begin(), "run");
+        args.insert(args.end(), {"--out", folder});
+      }
+      const Result r = run(args, s.path());
+      INFO(args[0] << " " << args[1] << ": " << r.err);
+      REQUIRE(r.code == 0);
+    };
+    run_ok(first, "ext");
+    REQUIRE(fs::exists(s.path() / "ext" / "final.hgck"));
+    run_ok({"resume", "ext", "--until", until}, nullptr);
+    run_ok(reference, "ref");
+    for (const std::string& f : files) {
+      INFO(f);
+      REQUIRE(fs::exists(s.path() / "ref" / f));
+      CHECK(slurp(s.path() / "ref" / f) == slurp(s.path() / "ext" / f));
+    }
+    CHECK(physics_summary(s.path() / "ref" / "summary.json") ==
+          physics_summary(s.path() / "ext" / "summary.json"));
+    CHECK(summary_int(s.path() / "ext" / "summary.json", "resumes") == 1);
+  };
+  SECTION("DSMC") {
+    check_extension({"--dim", "3", "--n", "3000", "--until", "4", "--every", "0.25", "--seed",
+                     "3", "--init", "beams", "--checkpoint-every", "1", "--histogram-every",
+                     "1"},
+                    "7",
+                    {"--dim", "3", "--n", "3000", "--until", "7", "--every", "0.25", "--seed",
+                     "3", "--init", "beams", "--histogram-every", "1"},
+                    {"moments.csv", "speed_histogram.csv", "speed_histograms.csv"});
+  }
+  SECTION("EDMD") {
+    // sampled every (5 - 1) / 50 = 0.08 from t = 1: 9 = 1 + 100 intervals
+    check_extension({"--engine", "edmd", "--dim", "3", "--n", "500", "--packing", "0.3",
+                     "--until", "5", "--seed", "4", "--checkpoint-every", "2"},
+                    "9",
+                    {"--engine", "edmd", "--dim", "3", "--n", "500", "--packing", "0.3",
+                     "--until", "9", "--every", "0.08", "--equilibration", "1", "--seed", "4"},
+                    {"moments.csv", "speed_histogram.csv", "vacf.csv"});
+    // a span that is not a whole number of intervals: refused, naming ends that are
+    const Result bad = run({"resume", "ext", "--until", "9.3"}, s.path());
+    CHECK(bad.code == 2);
+    CHECK(bad.err.find("try --until 9.24 or ") != std::string::npos);
+    // a finished run without --until, and an earlier end
+    const Result plain = run({"resume", "ext"}, s.path());
+    CHECK(plain.code == 2);
+    CHECK(plain.err.find("is finished; `hypergas resume ext --until T`") != std::string::npos);
+    const Result early = run({"resume", "ext", "--until", "3"}, s.path());
+    CHECK(early.code == 2);
+    CHECK(early.err.find("goes to 9 already") != std::string::npos);
+  }
+}
+
 TEST_CASE("resume refuses corrupted, truncated, foreign and missing checkpoints",
           "[checkpoint]") {
   Scratch s("bad");

@@ -70,13 +70,15 @@ Result run_mpi(int ranks, const std::vector<std::string>& args, const fs::path& 
 }
 
 /// Every file and folder below `dir`: relative path -> content ("/" for a folder), with
-/// summary.json files reduced to their physics fields.
+/// summary.json files reduced to their physics fields and a case's final state (final.hgck,
+/// which holds the wall-time counters of its loop) to its presence.
 std::map<std::string, std::string> sweep_files(const fs::path& dir) {
   std::map<std::string, std::string> m;
   for (const auto& e : fs::recursive_directory_iterator(dir)) {
     const std::string rel = e.path().lexically_relative(dir).string();
     if (!e.is_regular_file()) m[rel] = "/";
     else if (e.path().filename() == "summary.json") m[rel] = physics_summary(e.path());
+    else if (e.path().filename() == "final.hgck") m[rel] = "(the final state)";
     else m[rel] = slurp(e.path());
   }
   return m;
@@ -476,6 +478,15 @@ TEST_CASE("A bad plan writes nothing and exits 2, naming the problem", "[sweep]"
                   {"sweep folder 'file/sub' cannot be created"});
     check_refused(s, {"sweep", "p.toml", "--out", "file/sub/deeper"}, "file/sub",
                   {"'file/sub/deeper' cannot be created"});
+  }
+  SECTION("a plot key that no case writes, before any case runs") {
+    with_plan(plan("engine = \"dsmc\"\ndim = 3\nrestitution = 0.8\nuntil = 50\n",
+                   "n = [1000, 2000]\nplot = \"a2_mena\"\n"));
+    check_refused(s, to_out, "out",
+                  {"plot = \"a2_mena\" is not a column of sweep.csv", "did you mean \"a2_mean\"?"});
+    // a process measure is not a column either
+    with_plan(plan("engine = \"dsmc\"\n", "n = [100, 200]\nplot = \"wall_s\"\n"));
+    check_refused(s, to_out, "out", {"plot = \"wall_s\" is not a column of sweep.csv"});
   }
   SECTION("a TOML syntax error: its line") {
     with_plan("engine = \"dsmc\"\n\nn = = 3\n[sweep]\nseed = [1, 2]\n");

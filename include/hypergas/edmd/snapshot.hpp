@@ -23,13 +23,14 @@
 namespace hypergas::edmd {
 
 /// Calls obs with the state `s` at time ts (>= every local clock), in the original
-/// numbering (State::slot), positions unwrapped by the periodic image counts. Changes
+/// numbering (State::slot), positions unwrapped by the periodic image counts: the first
+/// obs.particles_read() particles (all by default). Changes
 /// nothing but `contacts`, the engine's Helfand slot, which receives what obs requests.
 template <int D, Features F>
 void observe_state(const State<D, F>& s, double ts, Observer& obs,
                    tally::ContactSlot* contacts = nullptr,
                    const MeasurementWindow* window = nullptr) {
-  const std::size_t n = s.size();
+  const std::size_t n = std::min(s.size(), obs.particles_read());
   constexpr int st = 2 * D;
   std::vector<double> rec(n * st);
   for (std::size_t a = 0; a < n; ++a) {  // a: original id, i: its current slot
@@ -55,7 +56,8 @@ void observe_state(const State<D, F>& s, double ts, Observer& obs,
     snap.window_collisions = window->collisions(s.ncoll);
   }
   snap.collisions = s.ncoll;
-  snap.collisions_per_particle = 2.0 * static_cast<double>(s.ncoll) / static_cast<double>(n);
+  snap.collisions_per_particle =
+      2.0 * static_cast<double>(s.ncoll) / static_cast<double>(s.size());
   std::vector<std::uint8_t> species;
   std::array<double, max_species> species_w{};
   if constexpr (F.species) {

@@ -33,6 +33,8 @@ class VacfRecorder final : public Observer {
   /// positions appear or disappear, or the time spacing differs from the first one by
   /// more than 1e-6 relative.
   void observe(const Snapshot& s) override;
+  /// The particles it follows: the first max_particles.
+  std::size_t particles_read() const override { return max_particles_; }
 
   std::size_t frames() const { return static_cast<std::size_t>(frames_); }
   std::size_t particles() const { return static_cast<std::size_t>(n_); }

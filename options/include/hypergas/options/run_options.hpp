@@ -35,6 +35,8 @@ struct RunOptions {
   std::string init;            ///< initial state name (registry::initial_states)
   double until = 0.0;          ///< end time
   double every = 0.0;          ///< requested sampling interval (0: not given; Schedule)
+  double histogram_every = 0.0;  ///< speed histograms this far apart (0: the final one only)
+  double equilibration = 0.0;  ///< EDMD: time before sampling starts (0: until / 5)
   double packing = 0.0;        ///< EDMD packing fraction eta
   double start_packing = 0.0;  ///< EDMD lattice start packing, compressed to eta (0: eta)
   double mass_ratio = 0.0;     ///< m2 / m1 of a two-mass gas (1 = one species)

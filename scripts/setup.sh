@@ -2,7 +2,8 @@
 # Sets up hypergas from nothing on Debian 12: installs the Debian packages it needs (only
 # those missing; non-interactive; as root or through sudo), then configures and builds a
 # Release build in ./build.
-#   (no argument)  the `hypergas` command only: what the default scene needs
+#   (no argument)  the `hypergas` command without `bench` and `report` (hypergas-measure):
+#                  what the default scene needs
 #   --python       also the Python module (build/python/hypergas) and its packages
 #   --all          everything: the module, tests, examples and benchmarks
 # Idempotent: a second run installs nothing and rebuilds only what changed. Other arguments

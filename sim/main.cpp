@@ -1,13 +1,24 @@
 // sim/main.cpp -- the `hypergas` command: option structure, subcommands, exit codes.
 //
+// Compiled twice (sim/CMakeLists.txt): as `hypergas`, and with HYPERGAS_MEASURE_TOOL as
+// `hypergas-measure`, which holds `bench` and `report` (the throughput and error-against-
+// run-time measurements, hypergas_measures). `hypergas bench ...` and `hypergas report ...`
+// execute hypergas-measure from the same folder with the same arguments, so the command's
+// first build (scripts/setup.sh without arguments) compiles neither.
+//
 // Exit codes: 0 success; 2 bad input (CLI11 parse errors and hypergas::InvalidInput, with
 // one clear line on stderr); 1 any other failure; 130 interrupted (SIGINT/SIGTERM). On any
 // non-zero exit the output folder holds nothing new (see output_dir.hpp) except, after
 // Ctrl-C of a `run`, its checkpoint.hgck, which `hypergas resume` continues.
+#include <cerrno>
+#include <cstring>
 #include <exception>
 #include <malloc.h>
 #include <filesystem>
 #include <optional>
+#include <vector>
+
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -59,6 +70,29 @@ std::string extras_message(CLI::App& app) {
   return fmt::format("hypergas: {}unknown {} '{}'{}", who, option ? "option" : "argument", arg,
                      hypergas::options::did_you_mean(arg, names));
 }
+bool parsed(const CLI::App* sub) { return sub && sub->parsed(); }
+
+#ifndef HYPERGAS_MEASURE_TOOL
+/// Replaces this process by hypergas-measure from this program's folder with the same
+/// arguments; returns only if that fails (exit code 2: not built, 1: not started).
+int exec_measure_tool(int argc, char** argv) {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::filesystem::path tool = self.parent_path() / "hypergas-measure";
+  if (ec || !std::filesystem::exists(tool, ec)) {
+    fmt::print(stderr, "hypergas: {} is done by hypergas-measure, which this build did not make "
+                       "(bash scripts/setup.sh --all, or cmake --build build --target "
+                       "hypergas_measure)\n", argv[1]);
+    return 2;
+  }
+  std::vector<char*> args{const_cast<char*>(tool.c_str())};
+  for (int i = 1; i < argc; ++i) args.push_back(argv[i]);
+  args.push_back(nullptr);
+  ::execv(tool.c_str(), args.data());
+  fmt::print(stderr, "hypergas: cannot start {}: {}\n", tool.string(), std::strerror(errno));
+  return 1;
+}
+#endif
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -76,7 +110,20 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
   app.set_version_flag("--version", std::string(hypergas::cli::version_line()));
 
+  CLI::App* run_app = nullptr;
+  [[maybe_unused]] CLI::App* resume_app = nullptr;  // not in hypergas-measure
+  CLI::App* sweep_app = nullptr;
   SceneOptions scene;
+  RunArgs run;
+  ResumeOptions resume;
+  SweepOptions sweep;
+  BenchOptions bench;
+#ifdef HYPERGAS_MEASURE_TOOL
+  CLI::App* bench_app =
+      app.add_subcommand("bench", "throughput: one JSON object per line on stdout");
+  add_bench_options(*bench_app, bench);
+  CLI::App* report_app = add_report_command(app);
+#else
   app.add_option("--out,-o", scene.out, "default scene: output folder for CSV and PNG files")
       ->capture_default_str();
   add_number(app, "--seed", scene.seed, "default scene: random seed");
@@ -84,22 +131,23 @@ int main(int argc, char** argv) {
   add_number(app, "--until", scene.until,
              "default scene: end time in equilibrium mean collision times, > 0");
 
-  RunArgs run;
-  CLI::App* run_app = app.add_subcommand("run", "run one simulation and write its files to --out");
+  run_app = app.add_subcommand("run", "run one simulation and write its files to --out");
   add_run_options(*run_app, run);
 
-  BenchOptions bench;
-  CLI::App* bench_app =
-      app.add_subcommand("bench", "throughput: one JSON object per line on stdout");
-  add_bench_options(*bench_app, bench);
+  // bench and report: every argument after them goes to hypergas-measure, --help included
+  CLI::App* bench_app = app.add_subcommand(
+      "bench", "throughput: one JSON object per line on stdout (bench --help: its options)");
+  CLI::App* report_app = app.add_subcommand(
+      "report", "error against run time (work-precision study): CSV + PNG in --out (report "
+                "--help: its options)");
+  for (CLI::App* tool : {bench_app, report_app}) {
+    tool->prefix_command();
+    tool->set_help_flag();
+  }
 
-  CLI::App* report_app = add_report_command(app);
-
-  ResumeOptions resume;
-  CLI::App* resume_app = add_resume_command(app, resume);
-
-  SweepOptions sweep;
-  CLI::App* sweep_app = add_sweep_command(app, sweep);
+  resume_app = add_resume_command(app, resume);
+  sweep_app = add_sweep_command(app, sweep);
+#endif
 
   try {
     app.parse(argc, argv);
@@ -113,10 +161,13 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+#ifndef HYPERGAS_MEASURE_TOOL
+  if (bench_app->parsed() || report_app->parsed()) return exec_measure_tool(argc, argv);
+#endif
   install_interrupt_handler();
   // Under mpirun/srun (and built with MPI): one MPI session for the commands that use ranks;
   // `run --replicas` and `report` hand their replicas out over the ranks.
-  const bool ranked = run_app->parsed() || report_app->parsed() || sweep_app->parsed();
+  const bool ranked = parsed(run_app) || parsed(report_app) || parsed(sweep_app);
   if (ranked && !ranks::built_with_mpi() && ranks::launcher_size() > 1) {
     fmt::print(stderr, "hypergas: this build has no MPI (CMake found none when it was "
                        "configured), so its {} processes would each run the whole job; run it "
@@ -127,17 +178,27 @@ int main(int argc, char** argv) {
   std::optional<ranks::Session> session;
   if (ranked) session.emplace();
   std::optional<ranks::ReplicaRanks> spread;
-  if (session && session->size() > 1 && !sweep_app->parsed()) {
+  if (session && session->size() > 1 && !parsed(sweep_app)) {
     spread.emplace(*session);
     hypergas::studies::set_replica_spread(&*spread);
   }
   // An error on one rank while others wait for it: end the job (MPI_Abort) with its code.
   const auto end = [&](int code) {
-    if (session && session->size() > 1 && !sweep_app->parsed()) session->abort(code);
+    if (session && session->size() > 1 && !parsed(sweep_app)) session->abort(code);
     return code;
   };
   try {
-    if (run_app->parsed()) {
+#ifdef HYPERGAS_MEASURE_TOOL
+    if (bench_app->parsed()) {
+      validate(bench);
+      return bench_command(bench);
+    }
+    if (report_app->parsed()) return report_command();
+    fmt::print(stderr, "hypergas-measure: give bench or report (it is run by hypergas bench "
+                       "and hypergas report)\n");
+    return 2;
+#else
+    if (parsed(run_app)) {
       const RunOptions o = run_options(run);
       if (session && session->size() > 1 && session->rank() == 0 && o.replicas == 1)
         fmt::print(stderr, "hypergas: note: under MPI, run spreads only --replicas over the "
@@ -145,14 +206,10 @@ int main(int argc, char** argv) {
                    session->size() - 1);
       return run_command(o);
     }
-    if (bench_app->parsed()) {
-      validate(bench);
-      return bench_command(bench);
-    }
-    if (report_app->parsed()) return report_command();
-    if (resume_app->parsed()) return resume_command(resume);
-    if (sweep_app->parsed()) return sweep_command(sweep, *session);
+    if (parsed(resume_app)) return resume_command(resume);
+    if (parsed(sweep_app)) return sweep_command(sweep, *session);
     return default_scene(scene);
+#endif
   } catch (const hypergas::InvalidInput& e) {
     fmt::print(stderr, "hypergas: {}\n", e.what());
     return end(2);

@@ -22,6 +22,24 @@ void expect_rejected(std::vector<std::string> args, const std::string& message_p
 }
 }  // namespace
 
+TEST_CASE("bench and report without hypergas-measure beside the command: exit 2, how to build it",
+          "[cli]") {
+  // the first build (scripts/setup.sh without arguments) makes only `hypergas`
+  Scratch s("solo");
+  const auto solo = s.path() / "hypergas";
+  cli_test::fs::copy_file(HYPERGAS_CLI_PATH, solo);
+  for (const char* tool : {"bench", "report"}) {
+    cli_test::Spawn how;
+    how.program = solo.string();
+    const auto r = cli_test::Child({tool, "--quick"}, s.path(), how).wait();
+    INFO(tool << ": " << r.err);
+    CHECK(r.code == 2);
+    CHECK(r.err.find(std::string("hypergas: ") + tool +
+                     " is done by hypergas-measure, which this build did not make") == 0);
+    CHECK(r.out.empty());
+  }
+}
+
 TEST_CASE("run: dimension outside 1..6 is rejected", "[cli]") {
   expect_rejected({"run", "--dim", "0"}, "--dim must be a dimension in 1..6, got 0");
   expect_rejected({"run", "--dim", "7"}, "--dim must be a dimension in 1..6, got 7");

@@ -10,6 +10,7 @@
 #include <fmt/core.h>
 
 #include "hypergas/error.hpp"
+#include "run_driver.hpp"
 
 namespace fs = std::filesystem;
 
@@ -57,8 +58,9 @@ std::string foreign_entry(const fs::path& dir, const std::vector<std::string>& o
   for (const auto& e : fs::directory_iterator(dir, ec)) names.push_back(e.path().filename());
   std::sort(names.begin(), names.end());
   for (const std::string& n : names) {
-    // the run's own bookkeeping: its checkpoint (run_driver.hpp) and the manifest
-    if (n == manifest || n == manifest + ".tmp" || n.rfind("checkpoint.hgck", 0) == 0)
+    // the run's own bookkeeping: its checkpoint (and the checkpoint's temporary file) and
+    // the manifest
+    if (n == manifest || n == manifest + ".tmp" || n.rfind(Checkpointer::file_name, 0) == 0)
       continue;
     if (std::find(owned.begin(), owned.end(), n) == owned.end()) return n;
   }

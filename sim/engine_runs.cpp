@@ -25,6 +25,13 @@ RunRecord simulate(const RunOptions& o, bool progress) {
   return simulate(o, progress, none);
 }
 
+double sampling_start(const RunOptions& o) {
+  // the fraction of [0, until] an EDMD run equilibrates when --equilibration is not given
+  constexpr double equilibration_fraction = 0.2;
+  if (o.engine_kind() != registry::EngineKind::edmd) return 0.0;
+  return o.equilibration > 0.0 ? o.equilibration : equilibration_fraction * o.until;
+}
+
 std::vector<Observer*> samplers(const std::vector<std::unique_ptr<Output>>& outputs) {
   std::vector<Observer*> v;
   for (const auto& out : outputs)

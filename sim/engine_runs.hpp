@@ -77,6 +77,11 @@ void save_run(checkpoint::Writer& w, const RunOptions& o, const DriverState& st,
   w(e);
 }
 
+/// Where a run's sampling starts: 0 for DSMC; for EDMD the end of the lattice start's
+/// equilibration, --equilibration or a fifth of --until (run_edmd.hpp, and resume --until,
+/// which keeps it).
+double sampling_start(const RunOptions& o);
+
 /// The observers of `outputs` at the sampling stops and at the fine stops.
 std::vector<Observer*> samplers(const std::vector<std::unique_ptr<Output>>& outputs);
 std::vector<Observer*> fine_observers(const std::vector<std::unique_ptr<Output>>& outputs);

@@ -28,6 +28,14 @@ void install_interrupt_handler() {
   std::signal(SIGTERM, on_signal);
 }
 
+namespace {
+/// Returns to the start of the stderr line and erases it.
+void erase_line() {
+  fmt::print(stderr, "\r\033[K");
+  std::fflush(stderr);
+}
+}  // namespace
+
 bool Progress::enabled() { return ::isatty(STDERR_FILENO) == 1; }
 
 Progress::Progress(std::string label, double total)
@@ -60,15 +68,12 @@ SetupLine::SetupLine(const std::string& text, bool show) : on_(show && Progress:
 }
 
 SetupLine::~SetupLine() {
-  if (!on_) return;
-  fmt::print(stderr, "\r\033[K");
-  std::fflush(stderr);
+  if (on_) erase_line();
 }
 
 void Progress::finish() {
   if (!on_ || !drawn_) return;
-  fmt::print(stderr, "\r\033[K");  // carriage return, erase the line
-  std::fflush(stderr);
+  erase_line();
   drawn_ = false;
 }
 

@@ -18,19 +18,13 @@
 #include <fmt/core.h>
 
 #include "commands.hpp"
+#include "engine_runs.hpp"
 #include "hypergas/error.hpp"
 #include "run_driver.hpp"
 
 namespace hypergas::cli {
 
 namespace {
-
-/// The start of sampling of a run with options o (run_edmd.hpp: --equilibration or a fifth
-/// of --until; DSMC samples from 0).
-double sampling_start(const RunOptions& o) {
-  if (o.engine_kind() != registry::EngineKind::edmd) return 0.0;
-  return o.equilibration > 0.0 ? o.equilibration : 0.2 * o.until;
-}
 
 void mark_given(RunOptions& o, const char* name) {
   if (!o.was_given(name)) o.given.emplace_back(name);

@@ -1,7 +1,7 @@
 // sim/run_edmd.hpp -- the body of `hypergas run --engine edmd` for one engine type (sigma =
-// m = kT = 1), compiled in run_dim.cpp.in's translation units. The first fifth of
-// [0, until] equilibrates the lattice start without sampling; the outputs, Z and the rates
-// come from the rest.
+// m = kT = 1), compiled in run_dim.cpp.in's translation units. The lattice start
+// equilibrates without sampling until sampling_start (--equilibration, by default the first
+// fifth of [0, until]); the outputs, Z and the rates come from the rest.
 #pragma once
 
 #include <chrono>
@@ -24,9 +24,8 @@
 
 namespace hypergas::cli::detail {
 
-/// Fraction of [0, until] spent equilibrating the lattice start before sampling (unless
-/// --equilibration says), and the stops (checkpoint opportunities) in it.
-inline constexpr double equilibration_fraction = 0.2;
+/// The stops (checkpoint opportunities) in the equilibration of the lattice start, which
+/// ends where sampling starts (sampling_start, engine_runs.hpp).
 inline constexpr int equilibration_stops = 10;
 
 template <class Engine>
@@ -36,7 +35,7 @@ RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
   using Clock = std::chrono::steady_clock;
   const edmd::Config cfg = edmd_config(o);
   const double until = o.until;
-  const double t_eq = o.equilibration > 0.0 ? o.equilibration : equilibration_fraction * until;
+  const double t_eq = sampling_start(o);
   RunPlan plan{.sampling = o.schedule(t_eq), .warmup_stops = equilibration_stops, .substeps = 1,
                .quench = {}};
   const bool granular = o.restitution != 1.0;

@@ -126,18 +126,18 @@ class SweepDir {
   bool fresh_ = true;
 };
 
-/// Runs case c in this process: from its checkpoint where it has one written by this build
-/// for these options, else from the start.
 /// Refuses a plan whose plot names no column of sweep.csv before any case runs: the keys
 /// come from a pilot of the first case with at most 1000 particles, one replica, one thread,
-/// and (without --transport, whose correlations need their span) until at most 1, which
-/// writes nothing; a case of the plan writes the same keys.
+/// and (without --transport, whose correlations need their span) until at most 1, sampled
+/// and equilibrated by default over that span, which writes nothing; a case of the plan
+/// writes the same keys.
 void check_plot_key(const sweep::Plan& plan, RunOptions o) {
   o.n = std::min(o.n, 1000LL);
   o.replicas = 1;
   o.threads = 1;
   if (!o.transport) o.until = std::min(o.until, 1.0);
   o.every = 0.0;
+  o.equilibration = 0.0;  // a given one may lie beyond the pilot's end
   const RunRecord rec = simulate(o, false);
   std::vector<std::string> keys;
   for (const auto& [k, v] : rec.summary) keys.push_back(k);
@@ -148,6 +148,8 @@ void check_plot_key(const sweep::Plan& plan, RunOptions o) {
                                    plan.plot_y, options::did_you_mean(plan.plot_y, keys, "\"")));
 }
 
+/// Runs case c in this process: from its checkpoint where it has one written by this build
+/// for these options, else from the start.
 void run_case(const Case& c) {
   const fs::path ck = fs::path(c.options.out) / Checkpointer::file_name;
   std::error_code ec;

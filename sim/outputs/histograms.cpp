@@ -41,12 +41,13 @@ class Series final : public Observer {
   template <class Archive>
   void io(Archive& a) {
     a.tag("speed-histograms");
-    a(stride_, seen_, rows_);
+    a(seen_, rows_);  // the stride follows from the options, which a resume parses again
   }
   const std::vector<std::vector<double>>& rows() const { return rows_; }
 
  private:
-  std::uint64_t stride_, seen_ = 0;
+  const std::uint64_t stride_;
+  std::uint64_t seen_ = 0;
   std::vector<std::vector<double>> rows_;
 };
 

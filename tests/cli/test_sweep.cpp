@@ -487,6 +487,11 @@ TEST_CASE("A bad plan writes nothing and exits 2, naming the problem", "[sweep]"
     // a process measure is not a column either
     with_plan(plan("engine = \"dsmc\"\n", "n = [100, 200]\nplot = \"wall_s\"\n"));
     check_refused(s, to_out, "out", {"plot = \"wall_s\" is not a column of sweep.csv"});
+    // the pilot's short span ignores an --equilibration beyond it: the plot key is judged
+    with_plan(plan("engine = \"edmd\"\ndim = 3\nequilibration = 5\nuntil = 20\n",
+                   "packing = [0.1, 0.2]\nplot = \"Zz\"\n"));
+    check_refused(s, to_out, "out",
+                  {"plot = \"Zz\" is not a column of sweep.csv", "did you mean \"Z\"?"});
   }
   SECTION("a TOML syntax error: its line") {
     with_plan("engine = \"dsmc\"\n\nn = = 3\n[sweep]\nseed = [1, 2]\n");

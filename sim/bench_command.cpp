@@ -23,6 +23,9 @@ int bench_command(const BenchOptions& o) {
     b.min_collisions = o.min_collisions;
     b.model = o.model;
     b.threads.assign(o.threads.begin(), o.threads.end());
+    b.schemes = o.schemes;
+    b.lane_size = static_cast<std::uint32_t>(o.lane_size);
+    b.epoch = o.epoch;
     b.seed = o.seed;
     studies::run_dsmc_bench(std::cout, b);
   }

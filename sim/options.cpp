@@ -122,6 +122,16 @@ void add_bench_options(CLI::App& app, BenchOptions& o) {
              "against the first, the ceiling (T one-thread engines run at once: their summed "
              "rate over one alone) and each thread's phase ticks per candidate")
       ->delimiter(',');
+  app.add_option("--scheme", o.schemes,
+                 "dsmc: time schemes to time, in turn within each repeat (repeatable or "
+                 "comma-separated: --scheme exact,lanes): " +
+                     registry::join(registry::scheme_names(), " | ") +
+                     "; a line per scheme and thread count, with vs_exact (its rate over the "
+                     "exact scheme's at that thread count) when exact is timed too")
+      ->delimiter(',')
+      ->capture_default_str();
+  add_number(app, "--lane-size", o.lane_size, "dsmc lanes: particles per lane (0: the default)");
+  add_number(app, "--epoch", o.epoch, "dsmc lanes: time between deals (mean collision times)");
   add_number(app, "--seed", o.seed, "random seed");
 }
 
@@ -152,6 +162,13 @@ void validate(const BenchOptions& o) {
     for (int d : o.dims)
       if (d == 1) bad(fmt::format("--packing {} in D = 1: at most 0.99", o.packing));
   if (o.reps < 1 || o.reps > 100) bad(fmt::format("--reps must be in 1..100, got {}", o.reps));
+  if (o.schemes.empty()) bad("--scheme needs at least one scheme");
+  for (const std::string& s : o.schemes)
+    check_name("--scheme", s, [](const std::string& v) { registry::scheme(v); });
+  if (o.lane_size < 0 || o.lane_size == 1 || o.lane_size > 2147483648LL)
+    bad(fmt::format("--lane-size must be 0 (the default) or in 2..2^31, got {}", o.lane_size));
+  if (!finite_positive(o.epoch))
+    bad(fmt::format("--epoch must be a finite time > 0, got {}", o.epoch));
   if (o.threads.empty()) bad("--threads needs at least one thread count");
   for (int t : o.threads) options::check_threads(t, "--threads");
   if (!(std::isfinite(o.min_collisions) && o.min_collisions >= 1000.0 &&

@@ -52,6 +52,9 @@ struct BenchOptions {
   int reps = 3;                             ///< timed runs per point (median reported)
   double min_collisions = 5e6;              ///< accepted collisions per timed run
   std::vector<int> threads{1};              ///< DSMC: thread counts to time (the run range)
+  std::vector<std::string> schemes{"exact"};  ///< DSMC time schemes, timed in turn
+  long long lane_size = 0;                  ///< DSMC lanes: particles per lane (0: default)
+  double epoch = 1.0;                       ///< DSMC lanes: time between deals
   std::uint64_t seed = 1;
 };
 

@@ -116,13 +116,21 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
   // one replica has no standard error (NaN, analysis/estimates.hpp); its summary says 0
   const auto [kurt_mean, kurt_se_k] = analysis::mean_se(kurt);
   const double kurt_se = k == 1 ? 0.0 : kurt_se_k;
-  rec.summary = run_summary(o, f,
-                            {{"replicas", std::int64_t{k}},
-                             {"threads", std::int64_t{o.threads}},
-                             {"collisions_per_particle", cpp[0]},
-                             {"kurtosis_x_replica_mean", kurt_mean},
-                             {"kurtosis_x_replica_se", kurt_se}},
-                            st0);
+  analysis::JsonObject keys{{"replicas", std::int64_t{k}},
+                            {"threads", std::int64_t{o.threads}},
+                            {"scheme", o.scheme}};
+  if (cfg.scheme == dsmc::Scheme::ntc) keys.emplace_back("dt", cfg.dt);
+  if (cfg.scheme == dsmc::Scheme::lanes) {
+    const std::uint32_t m = dsmc::detail::lane_size_of(cfg, Engine::stride);
+    keys.emplace_back("lanes", std::int64_t{dsmc::detail::LaneLayout::make(
+                                   static_cast<std::uint32_t>(o.n), m).lanes});
+    keys.emplace_back("lane_size", std::int64_t{m});
+    keys.emplace_back("epoch", cfg.epoch);
+  }
+  keys.emplace_back("collisions_per_particle", cpp[0]);
+  keys.emplace_back("kurtosis_x_replica_mean", kurt_mean);
+  keys.emplace_back("kurtosis_x_replica_se", kurt_se);
+  rec.summary = run_summary(o, f, keys, st0);
   summarize_outputs(rec.outputs, rec.summary);
   return rec;
 }

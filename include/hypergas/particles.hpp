@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <new>
 #include <string>
 #include <vector>
@@ -142,6 +143,14 @@ class Particles {
   }
 
   std::size_t size() const { return n_; }
+
+  /// Exchanges the records (and species) of particles i and j.
+  void swap(std::size_t i, std::size_t j) {
+    double* a = v_.data() + i * stride;
+    double* b = v_.data() + j * stride;
+    for (int k = 0; k < stride; ++k) std::swap(a[k], b[k]);
+    if constexpr (F.species) std::swap(s_[i], s_[j]);
+  }
 
   /// Velocity of particle i as an assignable Eigen view.
   VecMap velocity(std::size_t i) { return VecMap(v_.data() + i * stride + velocity_offset); }

@@ -124,9 +124,11 @@ inline constexpr std::array<Entry<InitialState>, 7> initial_states = {{
 }};
 
 /// The DSMC time schemes.
-inline constexpr std::array<Entry<dsmc::Scheme>, 2> schemes = {{
+inline constexpr std::array<Entry<dsmc::Scheme>, 3> schemes = {{
     {dsmc::Scheme::exact, "exact", "the exact Kac process (no time step)"},
-    {dsmc::Scheme::ntc, "ntc", "Bird's no-time-counter scheme with a time step"},
+    {dsmc::Scheme::ntc, "ntc", "Bird's no-time-counter scheme with a time step (--dt)"},
+    {dsmc::Scheme::lanes, "lanes",
+     "exact Kac processes of cache-sized lanes of particles, dealt anew every --epoch"},
 }};
 
 namespace detail {

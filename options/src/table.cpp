@@ -30,6 +30,8 @@ void check_engine(std::string_view v) { (void)registry::engine(v); }
 void check_model(std::string_view v) { (void)registry::model(v); }
 void check_init(std::string_view v) { (void)registry::initial_state(v); }
 void check_drive(std::string_view v) { (void)drive_kind(v); }
+void check_scheme(std::string_view v) { (void)registry::scheme(v); }
+std::string schemes_help() { return registry::describe(registry::schemes); }
 void check_duration(std::string_view v) { (void)parse_duration("--checkpoint-wall", std::string(v)); }
 std::string engines_help() { return registry::describe(registry::engines); }
 std::string models_help() { return registry::describe_models(); }
@@ -61,6 +63,10 @@ const Option table[] = {
   {"equilibration", 0, E::edmd, U::command, &R::equilibration, {pos_open, 1e12, true, false, "a finite time > 0, below --until"}, nullptr, nullptr, time_unit, "time the start equilibrates before sampling begins: the measurement window (Z, collision rate, the outputs) is [T, --until]", "until/5", false, false},
   {"histogram-every", 0, E::both, U::command, &R::histogram_every, {pos_open, 1e308, true, false, "a finite interval > 0"}, nullptr, nullptr, time_unit, "also write speed_histograms.csv (and speed_histograms.png): the speed histogram at every m-th sampling instant from the first, m = round(T / sampling interval), at least 1", "off", false, false},
   {"restitution", 0, E::both, U::engine, &R::restitution, {0, 1, false, false, "in [0, 1]"}, nullptr, nullptr, "", "coefficient of normal restitution alpha: each collision's impulse along the normal is scaled by (1 + alpha)/2 and the gas cools (granular gas; 1 = elastic). dsmc: the freely cooling gas is kept in scaled velocities, time runs in mean collision times at the current temperature, and moments.csv gives T and real_time (docs/validation.md)", "", false, false},
+  {"scheme", 0, E::dsmc, U::engine, &R::scheme, {}, check_scheme, schemes_help, "", "time scheme (docs/validation.md, \"The lanes scheme\": when to use which):", "", false, false},
+  {"dt", 0, E::dsmc, U::engine, &R::dt, {pos_open, 1e308, true, false, "a finite step > 0"}, nullptr, nullptr, "mean collision times", "with --scheme ntc: the time step", "", false, false},
+  {"lane-size", 0, E::dsmc, U::engine, &R::lane_size, {0, 2147483648.0, false, false, "0 or a number of particles in 2..2^31"}, nullptr, nullptr, "particles", "with --scheme lanes: particles per lane M; the gas is cut into L = round(N / M) lanes", "2^19 bytes of velocities: 16384 in 3D, 8192 in 5D and 6D", false, false},
+  {"epoch", 0, E::dsmc, U::engine, &R::epoch, {pos_open, 1e308, true, false, "a finite time > 0"}, nullptr, nullptr, "mean collision times", "with --scheme lanes: time between two deals of the particles into lanes", "", false, false},
   {"drive", 0, E::dsmc, U::engine, &R::drive, {}, check_drive, nullptr, "", "energy input of a granular gas: none (the homogeneous cooling state) or white-noise (random kicks that hold the first-Sonine temperature at --temperature; hard spheres, --restitution < 1)", "", false, false},
   {"drive-dt", 0, E::dsmc, U::engine, &R::drive_dt, {pos_open, 1, true, false, "a finite interval > 0 and at most 1"}, nullptr, nullptr, "mean collision times", "with --drive white-noise: interval between the kicks", "", false, false},
   {"tc-time", 0, E::edmd, U::engine, &R::tc_time, {0, 1e308, false, false, "a finite time >= 0"}, nullptr, nullptr, "sigma sqrt(m/kT)", "with --restitution < 1: a collision within this time of either particle's previous one is elastic (the TC model of Luding and McNamara against inelastic collapse)", "", false, false},
@@ -70,7 +76,7 @@ const Option table[] = {
   {"fraction", 0, E::both, U::engine, &R::fraction, {0, 1, false, false, "in [0, 1]"}, nullptr, nullptr, "", "number fraction of species 2 (mass m2)", "", true, false},
   {"temperature", 0, E::dsmc, U::engine, &R::temperature, {1e-100, 1e100, false, false, "a finite kT > 0 in [1e-100, 1e100]"}, nullptr, nullptr, "m1 v0^2", "initial kT (edmd fixes kT = 1)", "", true, false},
   {"seed", 0, E::both, U::engine, &R::seed, {0, 1.8446744073709552e19, false, false, "an integer in 0..2^64-1"}, nullptr, nullptr, "", "random seed", "", false, false},
-  {"threads", 'j', E::dsmc, U::engine, &R::threads, {1, 256, false, false, "in 1..256"}, nullptr, nullptr, "", "run the one system on T threads; every file is bit for bit the same for every T; systems below 2 MB of velocities (64 000 particles in 3D, 32 000 in 6D) run on one thread: there a second one gains nothing", "", false, false},
+  {"threads", 'j', E::dsmc, U::engine, &R::threads, {1, 256, false, false, "in 1..256"}, nullptr, nullptr, "", "run the one system on T threads; every file is bit for bit the same for every T. Exact scheme: systems below 2 MB of velocities (64 000 particles in 3D, 32 000 in 6D) run on one thread: there a second one gains nothing. Lanes scheme: the lanes are shared out among the T threads", "", false, false},
   {"replicas", 0, E::dsmc, U::command, &R::replicas, {1, 64, false, false, "in 1..64"}, nullptr, nullptr, "", "run K independent copies (files from copy 0, which keeps --seed; summary adds totals and replica error bars)", "", false, false},
   {"checkpoint-every", 0, E::both, U::command, &R::checkpoint_every, {pos_open, 1e308, true, false, "a finite time > 0"}, nullptr, nullptr, time_unit, "write OUT/checkpoint.hgck at the first sampling time after every T time units; continue a stopped run with `hypergas resume OUT`. Ctrl-C always writes one and stops", "off", false, false},
   {"checkpoint-wall", 0, E::both, U::command, &R::checkpoint_wall, {}, check_duration, nullptr, "", "also write a checkpoint after this much wall time, e.g. 90s, 10min, 2h", "off", false, false},
@@ -159,6 +165,10 @@ RunOptions defaults(registry::EngineKind e) {
   o.restitution = dsmc ? d.restitution : m.restitution;
   o.drive = std::string(drive_name(d.drive));
   o.drive_dt = d.drive_dt;
+  o.scheme = std::string(registry::name(d.scheme));
+  o.dt = d.dt;
+  o.lane_size = d.lane_size;
+  o.epoch = d.epoch;
   o.tc_time = m.tc_time;
   o.packing = m.packing;
   o.start_packing = m.start_packing;

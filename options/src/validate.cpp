@@ -162,6 +162,22 @@ void validate_granular(const RunOptions& o) {
     reject("--structure measures the elastic fluid at equilibrium: leave out --restitution");
 }
 
+/// --scheme and the options of one scheme.
+void validate_scheme(const RunOptions& o) {
+  if (o.engine_kind() != registry::EngineKind::dsmc) return;
+  const dsmc::Scheme s = registry::scheme(o.scheme);
+  if (s != dsmc::Scheme::ntc && o.was_given("--dt")) reject("--dt applies with --scheme ntc only");
+  if (s != dsmc::Scheme::lanes)
+    for (const char* k : {"--lane-size", "--epoch"})
+      if (o.was_given(k)) reject(fmt::format("{} applies with --scheme lanes only", k));
+  if (s == dsmc::Scheme::lanes && o.lane_size == 1)
+    reject("--lane-size must be 0 (the default) or at least 2");
+  if (s != dsmc::Scheme::exact && o.transport)
+    reject(fmt::format("--transport needs --scheme exact: its tagged particles and collision "
+                       "times are those of the exact process, not of --scheme {}",
+                       o.scheme));
+}
+
 void validate_transport(const RunOptions& o) {
   if (!o.transport) {
     for (const char* k : {"--correlation-dt", "--correlation-time", "--tagged"})
@@ -239,6 +255,7 @@ void validate(const RunOptions& o) {
   }
   if ((o.checkpoint_every > 0.0 || !o.checkpoint_wall.empty()) && o.replicas != 1)
     reject("--checkpoint-every and --checkpoint-wall need --replicas 1 (one system)");
+  validate_scheme(o);
   validate_transport(o);
   validate_granular(o);
   validate_physics(o);
@@ -289,6 +306,10 @@ dsmc::Config dsmc_config(const RunOptions& o) {
   cfg.restitution = o.restitution;
   cfg.drive = drive_kind(o.drive);
   cfg.drive_dt = o.drive_dt;
+  cfg.scheme = registry::scheme(o.scheme);
+  cfg.dt = o.dt;
+  cfg.lane_size = static_cast<std::uint32_t>(o.lane_size);
+  cfg.epoch = o.epoch;
   return cfg;
 }
 

@@ -164,8 +164,8 @@ class DSMC(_Engine):
     """The spatially homogeneous hard-sphere gas: the exact Kac/Boltzmann process.
 
     The arguments are the options of ``hypergas run --engine dsmc``, with its defaults and
-    checks (listed below, from the command's option table). Python only: ``scheme``
-    ("exact" or "ntc", Bird's no-time-counter scheme) and ``dt`` (its step).
+    checks (listed below, from the command's option table), ``scheme`` ("exact", "ntc"
+    or "lanes") among them.
 
     Units: time in equilibrium mean collision times; mass of species 0 = 1; velocities in
     units where the initial kT is ``temperature``.
@@ -173,17 +173,14 @@ class DSMC(_Engine):
 
     _kind = "dsmc"
 
-    def __init__(self, *args, scheme="exact", dt=0.01, **kwargs):
-        if not isinstance(scheme, str):
-            raise TypeError(f"scheme must be a string, got {type(scheme).__name__}")
-        dt = _time_argument("dt", dt)
+    def __init__(self, *args, **kwargs):
         given = _given(DSMC, args, kwargs)
-        super().__init__(_hypergas.make_dsmc(scheme=scheme, dt=dt, **given))
+        super().__init__(_hypergas.make_dsmc(**given))
         self.seed = int(given.get("seed", _DEFAULTS["dsmc"]["seed"]))
-        self.scheme = scheme
+        self.scheme = str(given.get("scheme", _DEFAULTS["dsmc"]["scheme"]))
 
     @classmethod
-    def from_velocities(cls, velocities, *, species=None, scheme="exact", dt=0.01, **kwargs):
+    def from_velocities(cls, velocities, *, species=None, **kwargs):
         """A DSMC gas that starts from the given velocities (copied), shape (n, dim).
 
         ``species`` (0 or 1 per particle) with ``mass_ratio`` (the mass of species 1; species
@@ -194,17 +191,13 @@ class DSMC(_Engine):
         keyword arguments are the constructor's, less those that the velocities fix (dim,
         n) or that describe an initial state (init, fraction, temperature).
         """
-        if not isinstance(scheme, str):
-            raise TypeError(f"scheme must be a string, got {type(scheme).__name__}")
-        dt = _time_argument("dt", dt)
         self = cls.__new__(cls)
         bound = _bind(DSMC.from_velocities.__func__.__signature__, None, velocities, **kwargs)
         given = {k: v for k, v in bound.arguments.items()
                  if k not in ("cls", "velocities") and v is not None}
-        _Engine.__init__(self, _hypergas.make_dsmc_from(
-            velocities, species, scheme=scheme, dt=dt, **given))
+        _Engine.__init__(self, _hypergas.make_dsmc_from(velocities, species, **given))
         self.seed = int(given.get("seed", _DEFAULTS["dsmc"]["seed"]))
-        self.scheme = scheme
+        self.scheme = str(given.get("scheme", _DEFAULTS["dsmc"]["scheme"]))
         return self
 
     @property
@@ -428,17 +421,17 @@ def _given(cls, args, kwargs):
     """The arguments the caller gave (by position or keyword), as keywords."""
     bound = _bind(cls.__init__.__signature__, None, *args, **kwargs)
     return {k: v for k, v in bound.arguments.items()
-            if k not in ("self", "scheme", "dt") and v is not None}
+            if k != "self" and v is not None}
 
 
-DSMC.__init__.__signature__ = _signature("dsmc", (("scheme", "exact"), ("dt", 0.01)))
+DSMC.__init__.__signature__ = _signature("dsmc")
 DSMC.from_velocities.__func__.__signature__ = inspect.Signature(
     [inspect.Parameter("cls", inspect.Parameter.POSITIONAL_OR_KEYWORD),
      inspect.Parameter("velocities", inspect.Parameter.POSITIONAL_OR_KEYWORD),
      inspect.Parameter("species", inspect.Parameter.KEYWORD_ONLY, default=None)]
     + [p.replace(kind=inspect.Parameter.KEYWORD_ONLY)
-       for p in _signature("dsmc", (("scheme", "exact"), ("dt", 0.01))).parameters.values()
-       if p.name in _hypergas.given_velocity_keywords() or p.name in ("scheme", "dt")])
+       for p in _signature("dsmc").parameters.values()
+       if p.name in _hypergas.given_velocity_keywords()])
 DSMC.__doc__ += _doc("dsmc")
 EDMD.__init__.__signature__ = _signature("edmd")
 EDMD.__doc__ += _doc("edmd")

@@ -48,7 +48,7 @@ EdmdHandle& edmd_of(const EngineBox& b) {
 /// hypergas.DSMC.from_velocities: a DSMC engine from given velocities (n x dim, total
 /// momentum zero) and optional species indices; the other keywords as run_options reads.
 std::unique_ptr<EngineBox> dsmc_from(const py::handle& velocities, const py::handle& species,
-                                     const std::string& scheme, double dt, const py::kwargs& kw) {
+                                     const py::kwargs& kw) {
   auto v = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(velocities);
   if (!v) type_error("velocities must be an array of numbers, shape (n, dim)");
   if (v.ndim() != 2)
@@ -82,7 +82,7 @@ std::unique_ptr<EngineBox> dsmc_from(const py::handle& velocities, const py::han
   // The engine refuses a non-zero total momentum (dsmc/time_unit.hpp: the time unit is
   // defined in the centre-of-mass frame).
   const GivenVelocities given{x, n, sp.empty() ? nullptr : sp.data()};
-  return dsmc_box(make_dsmc(o, scheme, dt, &given), o.threads);
+  return dsmc_box(make_dsmc(o, &given), o.threads);
 }
 
 }  // namespace
@@ -128,12 +128,11 @@ void bind_engines(py::module_& m) {
         b.h->observe(obs);
       });
 
-  m.def("make_dsmc", [](const std::string& scheme, double dt, const py::kwargs& kw) {
+  m.def("make_dsmc", [](const py::kwargs& kw) {
     const options::RunOptions o = run_options(registry::EngineKind::dsmc, kw, engine_keywords(registry::EngineKind::dsmc, false));
-    return dsmc_box(make_dsmc(o, scheme, dt), o.threads);
-  }, py::arg("scheme") = "exact", py::arg("dt") = 0.01);
-  m.def("make_dsmc_from", &dsmc_from, py::arg("velocities"), py::arg("species") = py::none(),
-        py::arg("scheme") = "exact", py::arg("dt") = 0.01);
+    return dsmc_box(make_dsmc(o), o.threads);
+  });
+  m.def("make_dsmc_from", &dsmc_from, py::arg("velocities"), py::arg("species") = py::none());
   m.def("make_edmd", [](const py::kwargs& kw) {
     const options::RunOptions o = run_options(registry::EngineKind::edmd, kw, engine_keywords(registry::EngineKind::edmd, false));
     auto box = std::make_unique<EngineBox>();

@@ -114,11 +114,11 @@ struct GivenVelocities {
   const std::uint8_t* species = nullptr;
 };
 
-/// Builds the engine that validated options `o` (engine dsmc) describe, with the time
-/// scheme and NTC step given; from `given` velocities instead of o's initial state when
+/// Builds the engine that validated options `o` (engine dsmc) describe (its time scheme
+/// included); from `given` velocities instead of o's initial state when
 /// set. Throws InvalidInput for parameters the engine rejects.
-std::unique_ptr<DsmcHandle> make_dsmc(const options::RunOptions& o, const std::string& scheme,
-                                      double dt, const GivenVelocities* given = nullptr);
+std::unique_ptr<DsmcHandle> make_dsmc(const options::RunOptions& o,
+                                      const GivenVelocities* given = nullptr);
 /// The same for the EDMD engine (engine edmd).
 std::unique_ptr<EdmdHandle> make_edmd(const options::RunOptions& o);
 

@@ -7,11 +7,9 @@
 
 namespace hypergas::python {
 
-std::unique_ptr<DsmcHandle> make_dsmc(const options::RunOptions& o, const std::string& scheme,
-                                      double dt, const GivenVelocities* given) {
-  dsmc::Config cfg = options::dsmc_config(o);
-  cfg.scheme = registry::scheme(scheme);
-  cfg.dt = dt;
+std::unique_ptr<DsmcHandle> make_dsmc(const options::RunOptions& o,
+                                      const GivenVelocities* given) {
+  const dsmc::Config cfg = options::dsmc_config(o);
   dsmc::validate(cfg);
   return for_dim(o.dim,
                  [&](auto dim) { return detail::make_dsmc_dim<decltype(dim)::value>(o, cfg, given); });

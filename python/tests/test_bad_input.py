@@ -29,7 +29,10 @@ import hypergas as hg
     ({"seed": -1}, "seed must be an integer in 0..2^64-1"),
     ({"seed": 2 ** 64}, "seed must be an integer in 0..2^64-1"),
     ({"scheme": "euler"}, "unknown DSMC scheme 'euler'"),
-    ({"scheme": "ntc", "dt": 0.0}, "NTC time step must be finite and > 0"),
+    ({"scheme": "ntc", "dt": 0.0}, "dt must be a finite step > 0"),
+    ({"dt": 0.1}, "dt applies with scheme ntc only"),
+    ({"lane_size": 64}, "lane_size applies with scheme lanes only"),
+    ({"scheme": "lanes", "epoch": -1.0}, "epoch must be a finite time > 0"),
     ({"n": 2 ** 40}, "n must be a number of particles in 2..2^31"),
 ])
 def test_dsmc_bad_values(kwargs, message):

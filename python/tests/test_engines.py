@@ -118,6 +118,24 @@ def test_threads_give_the_same_velocities():
     assert g.threads == 2
 
 
+def test_lanes_scheme_is_the_same_for_every_thread_count():
+    runs = []
+    for t in (1, 2, 5):
+        g = hg.DSMC(dim=3, n=9000, init="beams", seed=8, scheme="lanes", lane_size=1000,
+                    epoch=0.5, threads=t)
+        assert g.scheme == "lanes"
+        g.run(2.2)
+        runs.append((g.collisions, g.velocities.copy()))
+    for c, v in runs[1:]:
+        assert c == runs[0][0]
+        np.testing.assert_array_equal(v, runs[0][1])
+    # a deal moves particles between slots; energy and momentum stay
+    v0 = hg.DSMC(dim=3, n=9000, init="beams", seed=8, scheme="lanes", lane_size=1000).velocities
+    v = runs[0][1]
+    assert abs(np.sum(v * v) / np.sum(v0 * v0) - 1.0) < 1e-13
+    assert np.max(np.abs(v.sum(axis=0))) < 1e-10 * np.sqrt(np.sum(v0 * v0))
+
+
 def test_stops_do_not_change_the_edmd_trajectory():
     a = hg.EDMD(dim=2, n=800, packing=0.4, seed=9).run(3.0)
     b = hg.EDMD(dim=2, n=800, packing=0.4, seed=9).run(3.0, every=0.07, callback=lambda g: None)

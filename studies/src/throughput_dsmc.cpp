@@ -6,11 +6,14 @@
 #include <thread>
 #include <vector>
 
+#include <fmt/core.h>
+
 #include "clock.hpp"
 #include "hypergas/dsmc/engine.hpp"
 #include "hypergas/dsmc/huge_pages.hpp"
 #include "hypergas/particles.hpp"
 #include "hypergas/engines.hpp"
+#include "hypergas/registry.hpp"
 #include "hypergas/rng.hpp"
 #include "hypergas/studies/statistics.hpp"
 #include "hypergas/studies/throughput.hpp"
@@ -65,10 +68,20 @@ struct DsmcPoint {
   std::vector<dsmc::PhaseTicks> schedule;      // per thread (empty on one thread)
 };
 
+/// The timed configuration of a scheme: its name and the lanes' size and epoch.
+struct SchemeCase {
+  dsmc::Scheme scheme = dsmc::Scheme::exact;
+  std::uint32_t lane_size = 0;
+  double epoch = 1.0;
+};
+
 template <int D, class Model>
 DsmcPoint time_engine(std::size_t n, int threads, double min_collisions, std::uint64_t seed,
-                      bool cpu_clock) {
+                      bool cpu_clock, const SchemeCase& sc = {}) {
   dsmc::Config cfg;
+  cfg.scheme = sc.scheme;
+  cfg.lane_size = sc.lane_size;
+  cfg.epoch = sc.epoch;
   cfg.n = n;
   cfg.seed = seed;
   cfg.init = InitialState::delta;
@@ -92,16 +105,17 @@ DsmcPoint time_engine(std::size_t n, int threads, double min_collisions, std::ui
 /// The machine's ceiling for T threads: T independent one-thread engines (seeds differ)
 /// started together, each on its own gas; returns their summed collision rate.
 template <int D, class Model>
-double concurrent_engines(std::size_t n, int T, double min_collisions, std::uint64_t seed) {
+double concurrent_engines(std::size_t n, int T, double min_collisions, std::uint64_t seed,
+                          const SchemeCase& sc) {
   std::vector<double> rate(static_cast<std::size_t>(T));
   std::vector<std::thread> pool;
   for (int t = 1; t < T; ++t)
     pool.emplace_back([&, t] {
-      rate[std::size_t(t)] =
-          time_engine<D, Model>(n, 1, min_collisions, seed + 1000u * std::uint64_t(t), false)
-              .collisions_per_s;
+      rate[std::size_t(t)] = time_engine<D, Model>(n, 1, min_collisions,
+                                                   seed + 1000u * std::uint64_t(t), false, sc)
+                                 .collisions_per_s;
     });
-  rate[0] = time_engine<D, Model>(n, 1, min_collisions, seed, false).collisions_per_s;
+  rate[0] = time_engine<D, Model>(n, 1, min_collisions, seed, false, sc).collisions_per_s;
   for (auto& th : pool) th.join();
   double total = 0.0;
   for (double r : rate) total += r;
@@ -137,61 +151,88 @@ std::string schedule_json(const std::vector<std::vector<dsmc::PhaseTicks>>& reps
   return j + "]";
 }
 
-/// One line per thread count. Within each repeat, a one-thread engine, the runs of every
-/// thread count and the ceiling runs alternate, so that drifts of a shared machine hit all
-/// of them alike.
+/// One line per scheme and thread count. Within each repeat, the schemes take turns, and
+/// within a scheme a one-thread engine, the runs of every thread count and the ceiling runs
+/// alternate, so that drifts of a shared machine hit all of them alike.
 template <int D, class Model>
 void bench_point(std::ostream& out, const DsmcBenchOptions& o, std::size_t n) {
-  const std::size_t nt = o.threads.size();
-  std::vector<std::vector<double>> rate(nt), cand(nt), acc(nt), gain(nt), tick_rate(nt);
-  std::vector<std::vector<std::vector<dsmc::PhaseTicks>>> schedule(nt);
-  std::vector<double> probe, alone;
+  const std::size_t nt = o.threads.size(), ns = o.schemes.size();
+  std::vector<SchemeCase> cases(ns);
+  for (std::size_t s = 0; s < ns; ++s)
+    cases[s] = {registry::scheme(o.schemes[s]), o.lane_size, o.epoch};
+  const auto at = [&](std::size_t s, std::size_t k) { return s * nt + k; };
+  std::vector<std::vector<double>> rate(ns * nt), cand(ns * nt), acc(ns * nt), gain(ns * nt),
+      tick_rate(ns * nt);
+  std::vector<std::vector<std::vector<dsmc::PhaseTicks>>> schedule(ns * nt);
+  std::vector<double> probe;
   double bytes = 0.0;
   for (int r = 0; r < o.reps; ++r) {
     const std::uint64_t seed = o.seed + std::uint64_t(r);
-    double one = 0.0;  // the one-thread rate of this repeat
-    for (std::size_t k = 0; k < nt; ++k) {
-      const DsmcPoint p =
-          time_engine<D, Model>(n, o.threads[k], o.min_collisions, seed, o.cpu_clock);
-      rate[k].push_back(p.collisions_per_s);
-      cand[k].push_back(p.candidates_per_s);
-      acc[k].push_back(p.acceptance);
-      tick_rate[k].push_back(p.ticks_per_s);
-      schedule[k].push_back(p.schedule);
-      bytes = p.bytes_per_particle;
-      if (o.threads[k] == 1 && one == 0.0) one = p.collisions_per_s;
+    for (std::size_t s = 0; s < ns; ++s) {
+      double one = 0.0;  // the scheme's one-thread rate in this repeat
+      for (std::size_t k = 0; k < nt; ++k) {
+        const DsmcPoint p = time_engine<D, Model>(n, o.threads[k], o.min_collisions, seed,
+                                                  o.cpu_clock, cases[s]);
+        rate[at(s, k)].push_back(p.collisions_per_s);
+        cand[at(s, k)].push_back(p.candidates_per_s);
+        acc[at(s, k)].push_back(p.acceptance);
+        tick_rate[at(s, k)].push_back(p.ticks_per_s);
+        schedule[at(s, k)].push_back(p.schedule);
+        bytes = p.bytes_per_particle;
+        if (o.threads[k] == 1 && one == 0.0) one = p.collisions_per_s;
+      }
+      bool multi = false;
+      for (int t : o.threads) multi |= t > 1;
+      if (multi && one == 0.0)
+        one = time_engine<D, Model>(n, 1, o.min_collisions, seed, false, cases[s])
+                  .collisions_per_s;
+      for (std::size_t k = 0; k < nt; ++k)
+        gain[at(s, k)].push_back(
+            o.threads[k] > 1
+                ? concurrent_engines<D, Model>(n, o.threads[k], o.min_collisions, seed, cases[s]) /
+                      one
+                : 1.0);
     }
-    bool multi = false;
-    for (int t : o.threads) multi |= t > 1;
-    if (multi && one == 0.0)
-      one = time_engine<D, Model>(n, 1, o.min_collisions, seed, false).collisions_per_s;
-    for (std::size_t k = 0; k < nt; ++k)
-      gain[k].push_back(o.threads[k] > 1 ? concurrent_engines<D, Model>(n, o.threads[k],
-                                                                        o.min_collisions, seed) /
-                                               one
-                                         : 1.0);
     probe.push_back(
         pair_update_probe<D>(n, std::max(2e6, o.min_collisions), seed, o.cpu_clock));
-    alone.push_back(one);
   }
-  const double pr = median(probe), base = median(rate[0]);
-  for (std::size_t k = 0; k < nt; ++k) {
-    const double cr = median(rate[k]);
-    const double ceiling = median(gain[k]);
-    const double speedup = cr / base * o.threads[0];
-    char buf[768];
-    std::snprintf(buf, sizeof buf,
-                  "{\"bench\":\"dsmc\",\"engine\":\"dsmc\",\"model\":\"%s\",\"dim\":%d,\"n\":%zu,"
-                  "\"reps\":%d,\"collisions_per_s\":%.4g,\"candidates_per_s\":%.4g,"
-                  "\"acceptance\":%.4f,\"bytes_per_particle\":%.1f,"
-                  "\"probe_pair_updates_per_s\":%.4g,\"probe_ratio\":%.4f,\"threads\":%d,"
-                  "\"speedup\":%.3f,\"efficiency\":%.3f,\"ceiling\":%.3f,\"of_ceiling\":%.3f,"
-                  "\"ticks_per_s\":%.4g,\"clock\":\"%s\"",
-                  std::string(Model::name).c_str(), D, n, o.reps, cr, median(cand[k]),
-                  median(acc[k]), bytes, pr, cr / pr, o.threads[k], speedup,
-                  speedup / o.threads[k], ceiling, speedup / ceiling, median(tick_rate[k]),
-                  o.cpu_clock && o.threads[k] == 1 ? "cpu" : "wall");
-    out << buf << schedule_json(schedule[k]) << "}\n" << std::flush;
+  const double pr = median(probe);
+  std::size_t exact = ns;
+  for (std::size_t s = 0; s < ns; ++s)
+    if (cases[s].scheme == dsmc::Scheme::exact) exact = s;
+  for (std::size_t s = 0; s < ns; ++s) {
+    const double base = median(rate[at(s, 0)]);
+    for (std::size_t k = 0; k < nt; ++k) {
+      const double cr = median(rate[at(s, k)]);
+      const double ceiling = median(gain[at(s, k)]);
+      const double speedup = cr / base * o.threads[0];
+      char buf[1024];
+      std::snprintf(buf, sizeof buf,
+                    "{\"bench\":\"dsmc\",\"engine\":\"dsmc\",\"model\":\"%s\",\"dim\":%d,"
+                    "\"n\":%zu,\"reps\":%d,\"scheme\":\"%s\",\"collisions_per_s\":%.4g,"
+                    "\"candidates_per_s\":%.4g,"
+                    "\"acceptance\":%.4f,\"bytes_per_particle\":%.1f,"
+                    "\"probe_pair_updates_per_s\":%.4g,\"probe_ratio\":%.4f,\"threads\":%d,"
+                    "\"speedup\":%.3f,\"efficiency\":%.3f,\"ceiling\":%.3f,\"of_ceiling\":%.3f,"
+                    "\"ticks_per_s\":%.4g,\"clock\":\"%s\"",
+                    std::string(Model::name).c_str(), D, n, o.reps, o.schemes[s].c_str(), cr,
+                    median(cand[at(s, k)]), median(acc[at(s, k)]), bytes, pr, cr / pr,
+                    o.threads[k], speedup, speedup / o.threads[k], ceiling, speedup / ceiling,
+                    median(tick_rate[at(s, k)]),
+                    o.cpu_clock && o.threads[k] == 1 ? "cpu" : "wall");
+      std::string extra;
+      if (cases[s].scheme == dsmc::Scheme::lanes) {
+        const std::uint32_t m = cases[s].lane_size
+                                    ? cases[s].lane_size
+                                    : dsmc::detail::default_lane_size(Particles<D>::stride);
+        extra += fmt::format(",\"lanes\":{},\"lane_size\":{},\"epoch\":{}",
+                             dsmc::detail::LaneLayout::make(static_cast<std::uint32_t>(n), m).lanes,
+                             m, cases[s].epoch);
+      }
+      if (exact < ns)
+        extra += fmt::format(",\"vs_exact\":{:.3f}", cr / median(rate[at(exact, k)]));
+      out << buf << extra << schedule_json(schedule[at(s, k)]) << "}\n" << std::flush;
+    }
   }
 }
 

@@ -295,3 +295,19 @@ TEST_CASE("run: granular options out of range or in the wrong combination are re
       "--structure measures the elastic fluid at equilibrium: leave out --restitution");
 }
 #endif
+
+TEST_CASE("run: a scheme's options without that scheme, or out of range, are rejected", "[cli]") {
+  expect_rejected({"run", "--scheme", "euler"}, "unknown DSMC scheme 'euler'");
+  expect_rejected({"run", "--dt", "0.1"}, "--dt applies with --scheme ntc only");
+  expect_rejected({"run", "--scheme", "ntc", "--dt", "0"}, "--dt must be a finite step > 0");
+  expect_rejected({"run", "--lane-size", "64"}, "--lane-size applies with --scheme lanes only");
+  expect_rejected({"run", "--scheme", "ntc", "--epoch", "2"},
+                  "--epoch applies with --scheme lanes only");
+  expect_rejected({"run", "--scheme", "lanes", "--lane-size", "1"},
+                  "--lane-size must be 0 (the default) or at least 2");
+  expect_rejected({"run", "--scheme", "lanes", "--epoch", "0"}, "--epoch must be a finite time > 0");
+  expect_rejected({"run", "--scheme", "lanes", "--transport", "--until", "420"},
+                  "--transport needs --scheme exact");
+  expect_rejected({"run", "--engine", "edmd", "--scheme", "lanes"},
+                  "--scheme applies to --engine dsmc only");
+}

@@ -199,6 +199,14 @@ TEST_CASE("kill and resume: granular gases continue byte for byte", "[checkpoint
       with(edmd(3, "0.3", "2000", false), {"--restitution", "0.8", "--tc-time", "0.01"}), 14, 2);
 }
 
+TEST_CASE("kill and resume: the lanes scheme continues byte for byte", "[checkpoint]") {
+  // 25 lanes of 4000 with epochs of 0.7: kills land inside epochs and between them; the
+  // resumed run takes its lanes on another number of threads
+  kill_and_resume(with(dsmc(3, "hs", false),
+                       {"--scheme", "lanes", "--lane-size", "4000", "--epoch", "0.7"}),
+                  15, 2);
+}
+
 TEST_CASE("kill and resume: DSMC models, species and D = 1, 3, 6", "[checkpoint][long]") {
   kill_and_resume(dsmc(1, "hs", true), 3, 3);
   kill_and_resume(dsmc(3, "maxwell", false), 4, 3);

@@ -13,8 +13,10 @@
 
 namespace hypergas::dsmc {
 
-/// Time integration: the exact Kac process or Bird's no-time-counter scheme with a step.
-enum class Scheme { exact, ntc };
+/// Time integration: the exact Kac process, Bird's no-time-counter scheme with a step, or
+/// the lanes scheme: exact Kac processes of cache-sized lanes of particles, dealt anew
+/// every epoch (dsmc/detail/kac_lanes.hpp; its bias is derived in docs/validation.md).
+enum class Scheme { exact, ntc, lanes };
 
 /// Energy input of a granular gas (restitution < 1): none (the homogeneous cooling state) or
 /// a white-noise force on every particle (a driven steady state; dsmc/granular.hpp).
@@ -31,6 +33,11 @@ struct Config {
   double vhs_exponent = 0.5;                  ///< a in the VHS rate |g|^a, 0 <= a <= 1
   Scheme scheme = Scheme::exact;              ///< exact Kac process or NTC
   double dt = 0.01;                           ///< NTC time step (mean collision times)
+  /// Lanes scheme: particles per lane M (0: 2^19 bytes of velocities, 16384 in 3D; the
+  /// gas is cut into L = max(1, round(N / M)) lanes of N / L particles, rounded).
+  std::uint32_t lane_size = 0;
+  /// Lanes scheme: time between two deals of the particles into lanes (mean collision times).
+  double epoch = 1.0;
   std::uint64_t seed = 1;                     ///< all randomness derives from it
   InitialState init = InitialState::delta;    ///< initial velocity state
   InitialParams initial;                      ///< kT, per-species kT, fraction, mass ratio, ...
@@ -51,6 +58,12 @@ inline void validate(const Config& c) {
     throw InvalidInput("DSMC: VHS exponent must be in [0, 1]");
   if (c.scheme == Scheme::ntc && !(std::isfinite(c.dt) && c.dt > 0.0))
     throw InvalidInput("DSMC: NTC time step must be finite and > 0");
+  if (c.scheme == Scheme::lanes) {
+    if (!(std::isfinite(c.epoch) && c.epoch > 0.0))
+      throw InvalidInput("DSMC: the lanes' epoch must be finite and > 0");
+    if (c.lane_size == 1)
+      throw InvalidInput("DSMC: a lane needs at least 2 particles (--lane-size >= 2, or 0)");
+  }
   check_restitution(c.restitution, "DSMC: ");
   if (c.drive == Drive::white_noise) {
     if (!(c.restitution < 1.0))

@@ -46,6 +46,8 @@
 //   parallel.hpp    one system on T threads in candidate blocks, bit for bit as one thread
 //   self_check.hpp  the debug self-check: re-tests and block replays that count disagreements
 //   stepping.hpp    exact Poisson epochs, NTC steps and the majorant upkeep
+//   kac_lanes.hpp   the lanes scheme: exact Kac processes of cache-sized lanes, dealt anew
+//                   every epoch; bit for bit the same for every thread count
 // This header holds the public class: construction, checkpoints, observation, run_until.
 // Observers are called every `every` time units, never per collision; what they need per
 // collision they keep in a tally (Snapshot::tally), which the candidate loop, compiled
@@ -65,6 +67,7 @@
 
 #include "hypergas/checkpoint.hpp"
 #include "hypergas/dsmc/config.hpp"
+#include "hypergas/dsmc/detail/kac_lanes.hpp"
 #include "hypergas/dsmc/detail/parallel.hpp"
 #include "hypergas/dsmc/detail/state.hpp"
 #include "hypergas/dsmc/detail/stepping.hpp"
@@ -182,14 +185,23 @@ class Engine {
     if (threads < 1 || threads > 256)
       throw InvalidInput("DSMC: threads must be in 1..256, got " + std::to_string(threads));
     blocks_.configure(threads, block, s_.n, stride);
+    lanes_.configure(threads);
   }
   /// Sets a function called between epochs (exact scheme: every ~2N candidates and at each
   /// bound raise) and between NTC steps, with the engine consistent at time(); it may throw
   /// to stop a run early (run_until then leaves the gas at time() < t, ready to go on).
   /// Calling it changes nothing in the trajectory. Empty: no calls. Not state.
   void set_poll(std::function<void()> poll) { poll_ = std::move(poll); }
-  /// Threads that process one candidate block together (1: the one-thread loop).
-  int threads() const { return blocks_.threads(); }
+  /// Threads that process one candidate block together (1: the one-thread loop); with the
+  /// lanes scheme, the threads that take lanes.
+  int threads() const {
+    return s_.cfg.scheme == Scheme::lanes ? lanes_.threads() : blocks_.threads();
+  }
+  /// The lanes scheme: the number of lanes L and the lane size M asked for (detail/kac_lanes.hpp).
+  std::uint32_t lanes() const {
+    return detail::LaneLayout::make(s_.n, detail::lane_size_of(s_.cfg, stride)).lanes;
+  }
+  std::uint32_t lane_size() const { return detail::lane_size_of(s_.cfg, stride); }
   /// Candidates per parallel block (0: the one-thread loop runs).
   std::uint32_t block_size() const { return blocks_.block(); }
   /// Per thread of the team: ticks spent in each phase of the block schedule
@@ -215,10 +227,14 @@ class Engine {
     else
       return Model{};
   }
-  void advance_to(double t_end) { detail::advance_to(s_, blocks_, poll_, t_end); }
+  void advance_to(double t_end) {
+    if (s_.cfg.scheme == Scheme::lanes) detail::advance_lanes(s_, lanes_, poll_, t_end);
+    else detail::advance_to(s_, blocks_, poll_, t_end);
+  }
 
   detail::State<D, Model, F> s_;
   detail::ParallelBlocks blocks_;  // the thread team and its lanes (not state)
+  detail::LaneTeam lanes_;         // the lanes scheme's threads (not state)
   std::function<void()> poll_;     // set_poll (not state)
 };
 
@@ -244,7 +260,7 @@ void Engine<D, Model, F>::io(Archive& a) {
     s_.observed_at);
   a(s_.collisions, s_.candidates, s_.since_scan, s_.self_check, s_.check_failures,
     s_.species_w);
-  a(s_.log_scale, s_.real_time, s_.kT0, s_.kicks);
+  a(s_.log_scale, s_.real_time, s_.kT0, s_.kicks, s_.deals, s_.segments);
   s_.impulse = impulse_of(s_.cfg);
   if (s_.p.size() != s_.n) throw InvalidInput("checkpoint: particle count does not match");
 }

@@ -25,9 +25,8 @@ struct Batch {
 };
 
 /// Whether candidate c of batch b is accepted with the velocities of now and bound G.
-template <int D, class Model, Features F>
-[[gnu::always_inline]] inline bool test(const State<D, Model, F>& s, const Batch& b, int c,
-                                        double G) {
+template <class S>
+[[gnu::always_inline]] inline bool test(const S& s, const Batch& b, int c, double G) {
   return s.accepts(b.i[c], b.j[c], b.u[c], G);
 }
 

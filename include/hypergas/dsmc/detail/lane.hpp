@@ -62,13 +62,17 @@ struct DrawAhead {
 /// Every collision is reported to `hook` (state.hpp).
 /// Returns `count`, or (exact scheme) the position after the candidate that raised the
 /// bound; the lane's collisions and raise are in lane.
-template <bool Exact, bool Defer, bool Save, bool Ahead = false, class Hook = NoHook, int D,
-          class Model, Features F>
-[[gnu::noinline]] std::uint64_t run_lane(State<D, Model, F>& s, Lane& lane, std::uint64_t first,
+///
+/// S is the engine's State, or one lane of the lanes scheme (LaneView, kac_lanes.hpp): the
+/// same loop over a window of the particles with the lane's own draws and bound.
+template <bool Exact, bool Defer, bool Save, bool Ahead = false, class Hook = NoHook, class S>
+[[gnu::noinline]] std::uint64_t run_lane(S& s, Lane& lane, std::uint64_t first,
                        std::uint64_t count, double G, const Hook& hook = Hook{},
                        DrawAhead ahead = {}) {
   constexpr int B = batch_size;
-  constexpr int stride = State<D, Model, F>::stride;
+  constexpr int D = S::dim;
+  using Model = typename S::ModelType;
+  constexpr int stride = S::stride;
   const double* const v = s.p.velocity_data().data();
   std::array<Batch, 2> batch;
   // (the prefetches stay outside every branch: GCC 12 drops a prefetch behind one)
@@ -112,8 +116,10 @@ template <bool Exact, bool Defer, bool Save, bool Ahead = false, class Hook = No
     std::uint32_t mask = test_all(b);
     int pos = 0;  // next candidate of the batch
     for (;;) {
-      if (s.self_check) [[unlikely]]
-        verify_batch(s, b, pos, G, mask);
+      if constexpr (S::checks) {
+        if (s.self_check) [[unlikely]]
+          verify_batch(s, b, pos, G, mask);
+      }
       const std::uint32_t rest = mask >> pos << pos;
       if (rest == 0) break;
       const int c = std::countr_zero(rest);

@@ -65,13 +65,74 @@ struct FluxHook {
   }
 };
 
+template <class Model, int D>
+[[gnu::noinline]] Vec<D> deflect_outlined(const Vec<D>& g, double gn, EventStream& rng) {
+  return Model::template deflect<D>(g, gn, rng);
+}
+
+/// Whether pair (i, j) of p with acceptance uniform u is accepted now with bound G.
+template <int D, Features F, class Model>
+[[gnu::always_inline]] inline bool accepts_pair(const Particles<D, F>& p, const Model& model,
+                                                std::uint32_t i, std::uint32_t j, double u,
+                                                double G) {
+  if constexpr (Model::needs_majorant) {
+    constexpr int stride = Particles<D, F>::stride;
+    const double* v = p.velocity_data().data();
+    double g2 = 0.0;
+    for (int d = 0; d < D; ++d) {
+      const double x = v[std::size_t(i) * stride + d] - v[std::size_t(j) * stride + d];
+      g2 += x * x;
+    }
+    return model.accept(g2, u, G);
+  } else {
+    (void)p, (void)model, (void)i, (void)j, (void)u, (void)G;
+    return true;
+  }
+}
+
+/// Collides particles i and j of p with the scattering stream rng_k (candidate K's) and the
+/// restitution impulse, reports it to `hook`, and returns the larger of the two new squared
+/// speeds (0 for models without a majorant). The one collision of every DSMC scheme.
+template <class Model, bool Outlined = false, int D, Features F, class Hook>
+[[gnu::always_inline]] inline double collide_pair(Particles<D, F>& p, std::uint32_t i,
+                                                  std::uint32_t j, double impulse,
+                                                  EventStream rng_k, std::uint64_t K,
+                                                  const Hook& hook) {
+  using Map = Eigen::Map<Vec<D>>;
+  constexpr int stride = Particles<D, F>::stride;
+  double* v = p.velocity_data().data();
+  Map vi(v + std::size_t(i) * stride), vj(v + std::size_t(j) * stride);
+  const Vec<D> g = vi - vj;
+  const double gn = std::sqrt(g.squaredNorm());
+  Vec<D> delta;
+  if constexpr (Outlined) delta = deflect_outlined<Model, D>(g, gn, rng_k) - g;
+  else delta = Model::template deflect<D>(g, gn, rng_k) - g;
+  if constexpr (Hook::active) {
+    const Vec<D> oi = vi, oj = vj;
+    apply_deflection<D>(p, i, j, vi, vj, delta, impulse);
+    hook.collided(p, i, j, oi.data(), oj.data(), vi.data(), vj.data());
+    if constexpr (requires { hook.at_candidate(K, i, j, oi.data(), oj.data()); })
+      hook.at_candidate(K, i, j, oi.data(), oj.data());
+  } else {
+    (void)hook, (void)K;
+    apply_deflection<D>(p, i, j, vi, vj, delta, impulse);
+  }
+  if constexpr (Model::needs_majorant)
+    return std::max(vi.squaredNorm(), vj.squaredNorm());
+  else
+    return 0.0;
+}
+
 /// Shared state of Engine<D, Model, F>: plain data with the per-candidate kernel. Every
 /// member but `draws` and `impulse` is saved by the engine's io() (the draws are a function
 /// of the seed, the impulse of cfg).
 template <int D, class Model, Features F>
 struct State {
   using ParticlesT = Particles<D, F>;
+  using ModelType = Model;
+  static constexpr int dim = D;
   static constexpr int stride = ParticlesT::stride;
+  static constexpr bool checks = true;  // the candidate loop's self-check (self_check.hpp)
 
   State(const Config& c, Model m) : cfg(c), model(m), rng(Rng(c.seed).split(2)), draws(c.seed) {}
   State(const Config& c, Model m, ParticlesT particles)
@@ -103,6 +164,9 @@ struct State {
   double real_time = 0.0;
   double kT0 = 0.0;          // the equilibrium temperature of the initial energy
   std::uint64_t kicks = 0;   // white-noise kicks so far (the next at (kicks + 1/2) drive_dt)
+  // The lanes scheme (kac_lanes.hpp): deals so far (the next at deals * cfg.epoch) and
+  // segments run so far (each keys its lanes' random streams).
+  std::uint64_t deals = 0, segments = 0;
 
   /// Candidate K: its pair and acceptance uniform (candidates.hpp).
   void draw(std::uint64_t K, std::uint32_t& i, std::uint32_t& j, double& u) const {
@@ -113,21 +177,7 @@ struct State {
   }
   /// Whether pair (i, j) with acceptance uniform u is accepted now with bound G.
   [[gnu::always_inline]] bool accepts(std::uint32_t i, std::uint32_t j, double u, double G) const {
-    if constexpr (Model::needs_majorant) {
-      const double* v = p.velocity_data().data();
-      double g2 = 0.0;
-      for (int d = 0; d < D; ++d) {
-        const double x = v[std::size_t(i) * stride + d] - v[std::size_t(j) * stride + d];
-        g2 += x * x;
-      }
-      return model.accept(g2, u, G);
-    } else {
-      (void)i, (void)j, (void)u, (void)G;
-      return true;
-    }
-  }
-  [[gnu::noinline]] static Vec<D> deflect_outlined(const Vec<D>& g, double gn, EventStream& rng) {
-    return Model::template deflect<D>(g, gn, rng);
+    return accepts_pair(p, model, i, j, u, G);
   }
   /// Collides pair (i, j) as candidate K (its scattering words from word 2 of K on) and
   /// reports it to `hook`; returns the larger of the two new squared speeds. Outlined: the
@@ -136,29 +186,7 @@ struct State {
   template <bool Outlined = false, class Hook = NoHook>
   [[gnu::always_inline]] double collide(std::uint32_t i, std::uint32_t j, std::uint64_t K,
                                         const Hook& hook = Hook{}) {
-    using Map = Eigen::Map<Vec<D>>;
-    double* v = p.velocity_data().data();
-    Map vi(v + std::size_t(i) * stride), vj(v + std::size_t(j) * stride);
-    EventStream rng_k = draws.scattering(K);
-    const Vec<D> g = vi - vj;
-    const double gn = std::sqrt(g.squaredNorm());
-    Vec<D> delta;
-    if constexpr (Outlined) delta = deflect_outlined(g, gn, rng_k) - g;
-    else delta = Model::template deflect<D>(g, gn, rng_k) - g;
-    if constexpr (Hook::active) {
-      const Vec<D> oi = vi, oj = vj;
-      apply_deflection<D>(p, i, j, vi, vj, delta, impulse);
-      hook.collided(p, i, j, oi.data(), oj.data(), vi.data(), vj.data());
-      if constexpr (requires { hook.at_candidate(K, i, j, oi.data(), oj.data()); })
-        hook.at_candidate(K, i, j, oi.data(), oj.data());
-    } else {
-      (void)hook;
-      apply_deflection<D>(p, i, j, vi, vj, delta, impulse);
-    }
-    if constexpr (Model::needs_majorant)
-      return std::max(vi.squaredNorm(), vj.squaredNorm());
-    else
-      return 0.0;
+    return collide_pair<Model, Outlined>(p, i, j, impulse, draws.scattering(K), K, hook);
   }
 };
 

@@ -31,6 +31,10 @@ struct RunOptions {
   double restitution = 1.0;    ///< coefficient of normal restitution alpha
   std::string drive;           ///< DSMC energy input: "none" or "white-noise"
   double drive_dt = 0.0;       ///< DSMC: interval between white-noise kicks
+  std::string scheme;          ///< DSMC time scheme (registry::schemes)
+  double dt = 0.0;             ///< DSMC NTC time step
+  long long lane_size = 0;     ///< DSMC lanes scheme: particles per lane (0: the default)
+  double epoch = 0.0;          ///< DSMC lanes scheme: time between deals
   double tc_time = 0.0;        ///< EDMD: TC-model time (collisions this close are elastic)
   std::string init;            ///< initial state name (registry::initial_states)
   double until = 0.0;          ///< end time

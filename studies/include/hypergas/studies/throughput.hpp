@@ -46,15 +46,19 @@ struct DsmcBenchOptions {
   std::string model{dsmc::HardSpheres::name};  ///< collision model (registry::model_names())
   std::uint64_t seed = 1;
   std::vector<int> threads = {1};  ///< thread counts of the one system, each timed (1..256)
+  std::vector<std::string> schemes = {"exact"};  ///< time schemes (registry::schemes), in turn
+  std::uint32_t lane_size = 0;  ///< lanes scheme: particles per lane (0: the default)
+  double epoch = 1.0;           ///< lanes scheme: time between deals
   bool cpu_clock = false;  ///< rates per CPU second of the thread instead of per wall second
 };
 
-/// Runs the DSMC throughput study and prints one JSON line per (D, N, thread count) to
-/// `out`. Fields: model, dim, n, reps, collisions_per_s (median accepted collisions per
+/// Runs the DSMC throughput study and prints one JSON line per (D, N, scheme, thread count)
+/// to `out`. Fields: model, dim, n, reps, scheme (with lanes: lanes, lane_size, epoch),
+/// vs_exact (the rate over the exact scheme's at that thread count, when it is timed), collisions_per_s (median accepted collisions per
 /// second), candidates_per_s, acceptance, bytes_per_particle, probe_pair_updates_per_s,
-/// probe_ratio (one core), threads, speedup (against the first thread count, scaled by
-/// it), efficiency (speedup / threads), ceiling (summed rate of `threads` one-thread engines
-/// run at once over one alone), of_ceiling (speedup / ceiling), ticks_per_s (the phase
+/// probe_ratio (one core), threads, speedup (against the scheme's first thread count, scaled
+/// by it), efficiency (speedup / threads), ceiling (summed rate of `threads` one-thread
+/// engines of the scheme run at once over one alone), of_ceiling (speedup / ceiling), ticks_per_s (the phase
 /// clock's rate), clock, and with a team "schedule": per thread, the ticks of each phase per
 /// candidate of the system and the fraction of its candidates it deferred. Throws InvalidInput for an unknown model, a
 /// dimension outside 1..6 or a thread count outside 1..256.

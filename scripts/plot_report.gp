@@ -1,7 +1,7 @@
 # plot_report.gp -- the work-precision figure of `hypergas report` (error against run time).
 # Run inside a report folder (hypergas report writes a copy there and runs it):
 #   cd report && gnuplot plot_report.gp          -> work_precision.png
-# Reads work_precision.csv, finite_n.csv, ntc.csv and slopes.gp (fitted slopes).
+# Reads work_precision.csv, finite_n.csv, ntc.csv, lanes.csv and slopes.gp (fitted slopes).
 set datafile separator ','
 set datafile columnheaders
 set terminal pngcairo size 2400,1100 font ',11'
@@ -54,4 +54,14 @@ set xlabel 'NTC step dt (mean collision times)'
 set ylabel '|kurtosis(NTC) - kurtosis(exact)| / kurtosis, t = 2'
 plot 'ntc.csv' using 2:(abs($3)):4 with yerrorbars pt 7 title '|bias| +- 1 se', \
      'ntc.csv' using 2:(3 * $4) with lines dt 2 title '3 se (resolution)'
+
+set title 'lanes scheme, 3D hard spheres, N = 10^4: bias and cost against the exact process'
+set xlabel 'lane size M (particles)'
+set ylabel '|kurtosis(lanes) - kurtosis(exact)| / kurtosis, t = 2'
+set y2label 'CPU time per replica, lanes / exact'
+set y2tics
+unset logscale y2
+plot 'lanes.csv' using 2:(abs($3)):4 with yerrorbars pt 7 title '|bias| +- 1 se', \
+     'lanes.csv' using 2:(3 * $4) with lines dt 2 title '3 se (resolution)', \
+     'lanes.csv' using 2:($5 / $6) axes x1y2 with linespoints pt 5 title 'cost ratio (right axis)'
 unset multiplot

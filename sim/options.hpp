@@ -54,7 +54,7 @@ struct BenchOptions {
   std::vector<int> threads{1};              ///< DSMC: thread counts to time (the run range)
   std::vector<std::string> schemes{"exact"};  ///< DSMC time schemes, timed in turn
   long long lane_size = 0;                  ///< DSMC lanes: particles per lane (0: default)
-  double epoch = 1.0;                       ///< DSMC lanes: time between deals
+  double epoch = dsmc::Config{}.epoch;      ///< DSMC lanes: time between deals
   std::uint64_t seed = 1;
 };
 

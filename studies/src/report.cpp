@@ -63,6 +63,8 @@ ReportResult run_report_study(const ReportOptions& o) {
   detail::maxwell_study(o, res);
   say("NTC time-step bias against the exact process, 3D hard spheres");
   detail::ntc_study(o, res);
+  say("lanes scheme bias and cost against the exact process, 3D hard spheres");
+  detail::lanes_study(o, res);
   say("EDMD pressure Z against Tonks (1D), Henderson (2D), Carnahan-Starling (3D), virial (4D)");
   detail::eos_study(o, res);
   res.total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
@@ -87,6 +89,12 @@ void write_report(const ReportResult& res, const std::filesystem::path& dir, boo
   write_csv(dir / "slopes.csv", "study,engine,dim,slope,slope_se,points", rows);
   write_csv(dir / "finite_n.csv", "dim,n,rel_bias,rel_bias_se,theory", bias_rows(res.finite_n));
   write_csv(dir / "ntc.csv", "dim,dt,rel_bias,rel_bias_se,theory", bias_rows(res.ntc));
+  rows.clear();
+  for (std::size_t k = 0; k < res.lanes.size(); ++k)
+    rows.push_back(format("%d,%.10g,%.6e,%.6e,%.6e,%.6e", res.lanes[k].dim, res.lanes[k].param,
+                          res.lanes[k].bias, res.lanes[k].bias_se, res.lanes_run_s[k],
+                          res.exact_run_s));
+  write_csv(dir / "lanes.csv", "dim,lane_size,rel_bias,rel_bias_se,run_s,exact_run_s", rows);
   // Slope variables for the gnuplot titles.
   analysis::write_file_atomic((dir / "slopes.gp").string(), [&](std::ostream& os) {
     for (const auto& s : res.slopes)

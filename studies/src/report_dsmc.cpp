@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 #include "clock.hpp"
 #include "hypergas/analysis/estimates.hpp"
@@ -206,40 +208,68 @@ void maxwell_study(const ReportOptions& o, ReportResult& res) {
   });
 }
 
+namespace {
+/// The kurtosis <v^4>/<v^2>^2 at t = 2 from the delta shell, 3D hard spheres, N = 10000,
+/// over Rn replicas of `cfg` (seeds from sd), with the mean thread-CPU seconds per replica.
+std::pair<MeanSe, double> kurtosis_at_2(const ReportOptions& o, int Rn, dsmc::Config cfg,
+                                        std::uint64_t sd) {
+  const std::size_t N = 10000;
+  std::vector<double> k(Rn), cpu(Rn);
+  for_each_replica(Rn, o.threads, [&](int r) {
+    dsmc::Config c = cfg;
+    c.n = N;
+    c.init = InitialState::delta;
+    c.seed = replica_seed(sd, r);
+    const Stopwatch clock(true);
+    dsmc::Engine<3, dsmc::HardSpheres> e(c);
+    e.run_until(2.0);
+    cpu[r] = clock.seconds();
+    const auto& p = e.particles();
+    double m2 = 0, m4 = 0;
+    for (std::size_t i = 0; i < N; ++i) m2 += p.velocity(i).squaredNorm() / N;
+    for (std::size_t i = 0; i < N; ++i) m4 += std::pow(p.velocity(i).squaredNorm() / m2, 2) / N;
+    k[r] = m4;
+  }, {&k, &cpu});
+  return {mean_se(k), mean_se(cpu).mean};
+}
+}  // namespace
+
 // 4. NTC step bias in 3D: kurtosis at t = 2 from the delta shell, NTC minus exact.
 void ntc_study(const ReportOptions& o, ReportResult& res) {
   const int Rn = o.quick ? 64 : 384;
-  const std::size_t N = 10000;
-  auto kurt = [&](dsmc::Scheme s, double dt, std::uint64_t sd) {
-    std::vector<double> k(Rn);
-    for_each_replica(Rn, o.threads, [&](int r) {
-      dsmc::Config cfg;
-      cfg.n = N;
-      cfg.init = InitialState::delta;
-      cfg.scheme = s;
-      cfg.dt = dt;
-      cfg.seed = replica_seed(sd, r);
-      dsmc::Engine<3, dsmc::HardSpheres> e(cfg);
-      e.run_until(2.0);
-      const auto& p = e.particles();
-      double m2 = 0, m4 = 0;
-      for (std::size_t i = 0; i < N; ++i) m2 += p.velocity(i).squaredNorm() / N;
-      for (std::size_t i = 0; i < N; ++i) m4 += std::pow(p.velocity(i).squaredNorm() / m2, 2) / N;
-      k[r] = m4;
-    }, {&k});
-    return mean_se(k);
-  };
-  const MeanSe ex = kurt(dsmc::Scheme::exact, 1.0, o.seed + 1234);
+  dsmc::Config exact;
+  const auto [ex, ex_cpu] = kurtosis_at_2(o, Rn, exact, o.seed + 1234);
+  res.exact_kurtosis = ex;
+  res.exact_run_s = ex_cpu;
   std::vector<double> lx, ly;
   for (double dt : {2.0, 1.0, 0.5, 0.25, 0.125}) {
+    dsmc::Config c;
+    c.scheme = dsmc::Scheme::ntc;
+    c.dt = dt;
     const MeanSe nt =
-        kurt(dsmc::Scheme::ntc, dt, o.seed + 2000 + static_cast<std::uint64_t>(dt * 64));
+        kurtosis_at_2(o, Rn, c, o.seed + 2000 + static_cast<std::uint64_t>(dt * 64)).first;
     const double b = nt.mean - ex.mean;
     const double se = std::hypot(nt.se, ex.se);
     res.ntc.push_back({3, dt, b / ex.mean, se / ex.mean, 0.0});
     if (std::abs(b) > 3.0 * se) lx.push_back(std::log10(dt)), ly.push_back(std::log10(std::abs(b)));
   }
   if (lx.size() >= 2) std::tie(res.ntc_order, res.ntc_order_se) = fit_line(lx, ly);
+}
+
+// 5. The lanes scheme in 3D: the same kurtosis for lane sizes M (default epoch), minus the
+// exact scheme's (ntc_study's replicas), with the CPU time per replica: bias and speed.
+void lanes_study(const ReportOptions& o, ReportResult& res) {
+  const int Rn = o.quick ? 64 : 384;
+  for (std::uint32_t m : {8u, 64u, 512u, 4096u}) {
+    dsmc::Config c;
+    c.scheme = dsmc::Scheme::lanes;
+    c.lane_size = m;
+    const auto [la, cpu] = kurtosis_at_2(o, Rn, c, o.seed + 3000 + m);
+    const MeanSe& ex = res.exact_kurtosis;
+    const double b = la.mean - ex.mean;
+    res.lanes.push_back({3, double(m), b / ex.mean, std::hypot(la.se, ex.se) / ex.mean, 0.0});
+    res.lanes_run_s.push_back(cpu);
+  }
 }
 
 }  // namespace hypergas::studies::detail

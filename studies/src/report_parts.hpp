@@ -32,6 +32,7 @@ void stat_study(const ReportOptions& o, ReportResult& res);
 void finite_n_study(const ReportOptions& o, ReportResult& res);
 void maxwell_study(const ReportOptions& o, ReportResult& res);
 void ntc_study(const ReportOptions& o, ReportResult& res);
+void lanes_study(const ReportOptions& o, ReportResult& res);
 void eos_study(const ReportOptions& o, ReportResult& res);
 
 }  // namespace hypergas::studies::detail

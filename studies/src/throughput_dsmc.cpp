@@ -6,8 +6,6 @@
 #include <thread>
 #include <vector>
 
-#include <fmt/core.h>
-
 #include "clock.hpp"
 #include "hypergas/dsmc/engine.hpp"
 #include "hypergas/dsmc/huge_pages.hpp"
@@ -220,18 +218,22 @@ void bench_point(std::ostream& out, const DsmcBenchOptions& o, std::size_t n) {
                     o.threads[k], speedup, speedup / o.threads[k], ceiling, speedup / ceiling,
                     median(tick_rate[at(s, k)]),
                     o.cpu_clock && o.threads[k] == 1 ? "cpu" : "wall");
+      out << buf;
       std::string extra;
       if (cases[s].scheme == dsmc::Scheme::lanes) {
         const std::uint32_t m = cases[s].lane_size
                                     ? cases[s].lane_size
                                     : dsmc::detail::default_lane_size(Particles<D>::stride);
-        extra += fmt::format(",\"lanes\":{},\"lane_size\":{},\"epoch\":{}",
-                             dsmc::detail::LaneLayout::make(static_cast<std::uint32_t>(n), m).lanes,
-                             m, cases[s].epoch);
+        std::snprintf(buf, sizeof buf, ",\"lanes\":%u,\"lane_size\":%u,\"epoch\":%.17g",
+                      dsmc::detail::LaneLayout::make(static_cast<std::uint32_t>(n), m).lanes, m,
+                      cases[s].epoch);
+        extra += buf;
       }
-      if (exact < ns)
-        extra += fmt::format(",\"vs_exact\":{:.3f}", cr / median(rate[at(exact, k)]));
-      out << buf << extra << schedule_json(schedule[at(s, k)]) << "}\n" << std::flush;
+      if (exact < ns) {
+        std::snprintf(buf, sizeof buf, ",\"vs_exact\":%.3f", cr / median(rate[at(exact, k)]));
+        extra += buf;
+      }
+      out << extra << schedule_json(schedule[at(s, k)]) << "}\n" << std::flush;
     }
   }
 }

@@ -173,7 +173,8 @@ TEST_CASE("run --replicas 2 runs two DSMC replicas; replica 0 equals the one-rep
 }
 
 TEST_CASE("run --threads T writes the same files for T = 1, 2, 3", "[cli]") {
-  // 64000 particles: the smallest 3D system the engine splits over threads.
+  // The exact scheme runs on one thread whatever T is (dsmc/detail/parallel.hpp); its
+  // block schedule's files are checked against one thread in tests/unit.
   cli_test::Scratch s("threads");
   const std::vector<std::string> base{"run", "--dim", "3", "--n", "64000", "--until", "2",
                                       "--init", "beams", "--seed", "5"};

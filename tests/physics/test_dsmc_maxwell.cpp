@@ -53,10 +53,12 @@ TEMPLATE_TEST_CASE_SIG("Maxwell molecules: m4 relaxes at rate (D-1)/(2D)", "[dsm
 TEST_CASE("Maxwell molecules: BKW fourth moment in 3D and 5D", "[dsmc][physics]") {
   // m4(t) from the BKW initial state against the exact solution m4 = D (D+2) K (2 - K),
   // K = 1 - 2/(D+2) exp(-lambda4 t / 2), at 6 times; replica means vs exact by a t test
-  // with false-failure probability 1e-5 per point (1.2e-4 for the whole test).
+  // with false-failure probability 1e-5 per point (1.8e-4 for the whole test). The lanes
+  // scheme (lanes of 4096, 12 of them; 3D) must follow the same solution: its bias, O(1/M)
+  // by the law of docs/validation.md, is ~1e-4 relative, below the ~2e-3 resolution.
   const int R = 16;
   const std::vector<double> times = {0.5, 1.0, 2.0, 4.0, 8.0, 16.0};
-  auto run = [&](auto dim) {
+  auto run = [&](auto dim, Scheme scheme) {
     constexpr int D = decltype(dim)::value;
     std::vector<std::vector<double>> m4(times.size(), std::vector<double>(R));
     for_replicas_in_turn(R, [&](int r) {
@@ -64,6 +66,8 @@ TEST_CASE("Maxwell molecules: BKW fourth moment in 3D and 5D", "[dsmc][physics]"
       cfg.n = 50000;
       cfg.init = InitialState::bkw;
       cfg.seed = 77 + r;
+      cfg.scheme = scheme;
+      cfg.lane_size = 4096;
       Engine<D, MaxwellMolecules> e(cfg);
       on_two_threads(e);
       for (std::size_t k = 0; k < times.size(); ++k) {
@@ -73,11 +77,12 @@ TEST_CASE("Maxwell molecules: BKW fourth moment in 3D and 5D", "[dsmc][physics]"
     });
     for (std::size_t k = 0; k < times.size(); ++k) {
       const auto [m, se] = mean_se(m4[k]);
-      INFO("D = " << D << ", t = " << times[k] << ": m4 = " << m << " +- " << se << ", BKW "
+      INFO("D = " << D << ", scheme " << int(scheme) << ", t = " << times[k] << ": m4 = " << m << " +- " << se << ", BKW "
                   << bkw_m4(D, times[k]));
       REQUIRE(std::abs(m - bkw_m4(D, times[k])) < t_threshold(1e-5, R) * se);
     }
   };
-  run(DimTag<3>{});
-  run(DimTag<5>{});
+  run(DimTag<3>{}, Scheme::exact);
+  run(DimTag<5>{}, Scheme::exact);
+  run(DimTag<3>{}, Scheme::lanes);
 }

@@ -136,8 +136,10 @@ TEST_CASE("DSMC threads: bad thread counts are refused", "[dsmc]") {
   Engine<3, HardSpheres> e(small(100, InitialState::maxwell, Scheme::exact));
   REQUIRE_THROWS_AS(e.set_threads(0), InvalidInput);
   REQUIRE_THROWS_AS(e.set_threads(257), InvalidInput);
-  e.set_threads(2);  // below 64000 particles in 3D the one-thread loop runs
-  REQUIRE(e.threads() == 1);
+  e.set_threads(2);  // the exact scheme runs the one-thread loop without a block size
+  REQUIRE(e.threads() == 2);
+  REQUIRE(e.block_size() == 0);
   e.set_threads(2, 64);
   REQUIRE(e.threads() == 2);
+  REQUIRE(e.block_size() == 64);
 }

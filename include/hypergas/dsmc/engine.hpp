@@ -177,14 +177,14 @@ class Engine {
   void set_self_check(bool on) { s_.self_check = on; }
   std::uint64_t self_check_failures() const { return s_.check_failures; }
   /// Runs one system on `threads` threads (1 .. 256). The result is bit for bit the same for
-  /// every thread count; `block` (candidates per parallel block, 0: chosen from N) only
-  /// changes the speed. A gas whose velocities fit in a core's cache (below 64 000 particles
-  /// in 3D, 32 000 in 6D: ParallelBlocks::min_parallel_bytes) runs the one-thread loop
-  /// unless a block size is given: there more threads would be slower.
+  /// every thread count. The lanes scheme shares its lanes out among the threads. The exact
+  /// and NTC schemes run the one-thread loop unless `block` (candidates per parallel
+  /// block) is given: their block schedule measured slower than one thread
+  /// (detail/parallel.hpp); a block size runs it, for its tests.
   void set_threads(int threads, std::uint32_t block = 0) {
     if (threads < 1 || threads > 256)
       throw InvalidInput("DSMC: threads must be in 1..256, got " + std::to_string(threads));
-    blocks_.configure(threads, block, s_.n, stride);
+    blocks_.configure(threads, block);
     lanes_.configure(threads);
   }
   /// Sets a function called between epochs (exact scheme: every ~2N candidates and at each
@@ -192,11 +192,9 @@ class Engine {
   /// to stop a run early (run_until then leaves the gas at time() < t, ready to go on).
   /// Calling it changes nothing in the trajectory. Empty: no calls. Not state.
   void set_poll(std::function<void()> poll) { poll_ = std::move(poll); }
-  /// Threads that process one candidate block together (1: the one-thread loop); with the
-  /// lanes scheme, the threads that take lanes.
-  int threads() const {
-    return s_.cfg.scheme == Scheme::lanes ? lanes_.threads() : blocks_.threads();
-  }
+  /// The threads asked for by set_threads (block_size() == 0: the exact and NTC schemes
+  /// run the one-thread loop).
+  int threads() const { return blocks_.threads(); }
   /// The lanes scheme: the number of lanes L and the lane size M asked for (detail/kac_lanes.hpp).
   std::uint32_t lanes() const {
     return detail::LaneLayout::make(s_.n, detail::lane_size_of(s_.cfg, stride)).lanes;

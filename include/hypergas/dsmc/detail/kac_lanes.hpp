@@ -206,6 +206,19 @@ void exchange_halves(Particles<D, F>& p, std::uint32_t a0, std::uint32_t ma, std
   for (std::uint32_t q = 0; q < k; ++q) p.swap(a0 + q, b0 + q);
 }
 
+/// Reads particles [b, b + m) in order, so that the exchange's random swaps that follow hit
+/// the cache: a sequential pass streams from memory at full bandwidth, random first touches
+/// would each wait for memory.
+template <int D, Features F>
+void warm_lane(const Particles<D, F>& p, std::uint32_t b, std::uint32_t m) {
+  constexpr std::size_t line = 64 / sizeof(double);
+  const double* v = p.velocity_data().data();
+  for (std::size_t i = std::size_t(b) * Particles<D, F>::stride,
+                   e = std::size_t(b + m) * Particles<D, F>::stride;
+       i < e; i += line)
+    __builtin_prefetch(v + i, 1);
+}
+
 /// The lanes' threads and per-thread tallies (not state: set_threads rebuilds them).
 class LaneTeam {
  public:
@@ -308,6 +321,8 @@ void advance_lanes(State<D, Model, F>& s, LaneTeam& team, const std::function<vo
       if (2 * q + 1 < L) {
         const std::uint32_t b = order[2 * q + 1];
         Rng r = deal_rng.split(2 + std::uint64_t(q));
+        warm_lane(s.p, lay.begin(a), lay.count(a));
+        warm_lane(s.p, lay.begin(b), lay.count(b));
         exchange_halves(s.p, lay.begin(a), lay.count(a), lay.begin(b), lay.count(b), r);
         counts[b] = kac_lane(s, lay.begin(b), lay.count(b), h, lane_rng.split(b), hook);
       }

@@ -25,23 +25,15 @@ namespace hypergas::dsmc::detail {
 /// it; without a team the one-thread loop runs).
 class ParallelBlocks {
  public:
-  /// Velocity arrays below this size (bytes) run on one thread whatever T is: they sit in a
-  /// core's own cache, where a candidate costs too little for the block schedule's
-  /// bookkeeping to pay (measured: docs/benchmarks.md, "One system on T threads"). That is
-  /// 64 000 particles in 3D, 32 000 in 5D and 6D, 128 000 in 2D.
-  static constexpr std::size_t min_parallel_bytes = 2048000;
-  /// Whether n particles of `stride` doubles run on a team.
-  static bool large_enough(std::uint32_t n, int stride) {
-    return std::size_t(n) * std::size_t(stride) * sizeof(double) >= min_parallel_bytes;
-  }
-
-  /// `threads` (1 .. 256, checked by the caller) on n particles of `stride` doubles;
-  /// `block` candidates per block (0: chosen from n). Without a block size, a team is kept
-  /// only for several threads on a large enough gas (large_enough).
-  void configure(int threads, std::uint32_t block, std::uint32_t n, int stride) {
-    const std::uint32_t auto_block = std::clamp<std::uint32_t>(n / 64, 2048, 65536);
-    const bool parallel = block > 0 || (threads > 1 && large_enough(n, stride));
-    block_ = parallel ? (block > 0 ? block : auto_block) : 0;
+  /// `threads` (1 .. 256, checked by the caller), `block` candidates per block. Only an explicit block size starts the block schedule:
+  /// on its own the exact scheme runs the one-thread loop whatever T is, because the
+  /// schedule measured slower than one thread on the machines this code runs on (0.50x at
+  /// 1e5, 0.89x at 1e6, 0.83x at 1e7 particles in 3D; docs/benchmarks.md, "One system on T
+  /// threads"). The lanes scheme is what uses T threads.
+  void configure(int threads, std::uint32_t block) {
+    threads_ = threads;
+    const bool parallel = block > 0;
+    block_ = parallel ? block : 0;
     if (!parallel) {
       team_.reset();
       lanes_.clear();
@@ -59,8 +51,8 @@ class ParallelBlocks {
   void reset_profile() { profile_.assign(profile_.size(), PhaseTicks{}); }
   /// Candidates per block (0: no team).
   std::uint32_t block() const { return block_; }
-  /// Threads that process one candidate block together (1: the one-thread loop).
-  int threads() const { return team_ ? team_->size() : 1; }
+  /// The threads asked for (set_threads); block() == 0 says that the one-thread loop runs.
+  int threads() const { return threads_; }
   /// Whether an epoch of m candidates runs in blocks (at least four of them).
   bool takes(std::uint64_t m) const { return team_ && m >= 4u * block_; }
 
@@ -283,6 +275,7 @@ class ParallelBlocks {
   }
 
   std::uint32_t block_ = 0;
+  int threads_ = 1;
   std::unique_ptr<ThreadTeam> team_;
   std::array<std::vector<std::uint32_t>, 2> pairs_;  // blocks b and b + 1 (b mod 2): pairs drawn ahead
   std::vector<Lane> lanes_;

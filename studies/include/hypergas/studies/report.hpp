@@ -20,6 +20,9 @@
 //               the delta shell for steps dt, minus the exact scheme's value (the time-
 //               continuous process; no closed form exists for hard spheres), in ntc.csv; the
 //               order p of |bias| ~ dt^p is fitted where the bias exceeds 3 standard errors.
+//   lanes       the lanes scheme (dsmc/detail/kac_lanes.hpp), the same kurtosis for lane
+//               sizes M = 8, 64, 512, 4096 (default epoch) minus the exact scheme's, with the
+//               CPU seconds per replica of both, in lanes.csv: its bias and its cost.
 //   eos         EDMD, N = 1000, D = 1..4: the reduced pressure Z from the collision virial
 //               over a window of T time units (after the lattice has melted, t = 2), against
 //                 1D rods, eta = 0.5: Tonks' exact Z = 1/(1 - eta) (L. Tonks, Phys. Rev. 50,
@@ -51,6 +54,8 @@
 #include <limits>
 #include <string>
 #include <vector>
+
+#include "hypergas/analysis/estimates.hpp"
 
 namespace hypergas::studies {
 
@@ -91,7 +96,10 @@ struct BiasRow {
 struct ReportResult {
   std::vector<ReportPoint> points;
   std::vector<ReportSlope> slopes;
-  std::vector<BiasRow> finite_n, ntc;
+  std::vector<BiasRow> finite_n, ntc, lanes;
+  analysis::MeanSe exact_kurtosis;       ///< ntc: the exact scheme's kurtosis at t = 2
+  double exact_run_s = 0.0;              ///< its thread-CPU seconds per replica
+  std::vector<double> lanes_run_s;       ///< per lanes row: thread-CPU seconds per replica
   double ntc_order = std::numeric_limits<double>::quiet_NaN();  ///< p in |bias| ~ dt^p
   double ntc_order_se = std::numeric_limits<double>::quiet_NaN();
   double total_s = 0.0;  ///< wall-clock seconds of the whole study

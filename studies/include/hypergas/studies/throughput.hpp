@@ -33,6 +33,7 @@
 #include <string_view>
 #include <vector>
 
+#include "hypergas/dsmc/config.hpp"
 #include "hypergas/dsmc/models.hpp"
 
 namespace hypergas::studies {
@@ -48,7 +49,7 @@ struct DsmcBenchOptions {
   std::vector<int> threads = {1};  ///< thread counts of the one system, each timed (1..256)
   std::vector<std::string> schemes = {"exact"};  ///< time schemes (registry::schemes), in turn
   std::uint32_t lane_size = 0;  ///< lanes scheme: particles per lane (0: the default)
-  double epoch = 1.0;           ///< lanes scheme: time between deals
+  double epoch = dsmc::Config{}.epoch;  ///< lanes scheme: time between deals
   bool cpu_clock = false;  ///< rates per CPU second of the thread instead of per wall second
 };
 

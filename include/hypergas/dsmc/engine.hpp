@@ -185,7 +185,8 @@ class Engine {
     if (threads < 1 || threads > 256)
       throw InvalidInput("DSMC: threads must be in 1..256, got " + std::to_string(threads));
     blocks_.configure(threads, block);
-    lanes_.configure(threads);
+    // the other schemes keep no idle team
+    lanes_.configure(s_.cfg.scheme == Scheme::lanes ? threads : 1);
   }
   /// Sets a function called between epochs (exact scheme: every ~2N candidates and at each
   /// bound raise) and between NTC steps, with the engine consistent at time(); it may throw

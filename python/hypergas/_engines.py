@@ -165,7 +165,8 @@ class DSMC(_Engine):
 
     The arguments are the options of ``hypergas run --engine dsmc``, with its defaults and
     checks (listed below, from the command's option table), ``scheme`` ("exact", "ntc"
-    or "lanes") among them.
+    or "lanes") among them. With ``scheme="lanes"`` each deal moves particles between rows
+    of ``velocities``: row i is not the same particle across deals.
 
     Units: time in equilibrium mean collision times; mass of species 0 = 1; velocities in
     units where the initial kT is ``temperature``.

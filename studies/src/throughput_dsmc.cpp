@@ -66,20 +66,11 @@ struct DsmcPoint {
   std::vector<dsmc::PhaseTicks> schedule;      // per thread (empty on one thread)
 };
 
-/// The timed configuration of a scheme: its name and the lanes' size and epoch.
-struct SchemeCase {
-  dsmc::Scheme scheme = dsmc::Scheme::exact;
-  std::uint32_t lane_size = 0;
-  double epoch = 1.0;
-};
-
+/// Times an engine of n particles on `threads` threads; `cfg` gives the scheme (with the
+/// lanes' size and epoch), the rest is set here.
 template <int D, class Model>
 DsmcPoint time_engine(std::size_t n, int threads, double min_collisions, std::uint64_t seed,
-                      bool cpu_clock, const SchemeCase& sc = {}) {
-  dsmc::Config cfg;
-  cfg.scheme = sc.scheme;
-  cfg.lane_size = sc.lane_size;
-  cfg.epoch = sc.epoch;
+                      bool cpu_clock, dsmc::Config cfg = {}) {
   cfg.n = n;
   cfg.seed = seed;
   cfg.init = InitialState::delta;
@@ -104,7 +95,7 @@ DsmcPoint time_engine(std::size_t n, int threads, double min_collisions, std::ui
 /// started together, each on its own gas; returns their summed collision rate.
 template <int D, class Model>
 double concurrent_engines(std::size_t n, int T, double min_collisions, std::uint64_t seed,
-                          const SchemeCase& sc) {
+                          const dsmc::Config& sc) {
   std::vector<double> rate(static_cast<std::size_t>(T));
   std::vector<std::thread> pool;
   for (int t = 1; t < T; ++t)
@@ -155,9 +146,12 @@ std::string schedule_json(const std::vector<std::vector<dsmc::PhaseTicks>>& reps
 template <int D, class Model>
 void bench_point(std::ostream& out, const DsmcBenchOptions& o, std::size_t n) {
   const std::size_t nt = o.threads.size(), ns = o.schemes.size();
-  std::vector<SchemeCase> cases(ns);
-  for (std::size_t s = 0; s < ns; ++s)
-    cases[s] = {registry::scheme(o.schemes[s]), o.lane_size, o.epoch};
+  std::vector<dsmc::Config> cases(ns);
+  for (std::size_t s = 0; s < ns; ++s) {
+    cases[s].scheme = registry::scheme(o.schemes[s]);
+    cases[s].lane_size = o.lane_size;
+    cases[s].epoch = o.epoch;
+  }
   const auto at = [&](std::size_t s, std::size_t k) { return s * nt + k; };
   std::vector<std::vector<double>> rate(ns * nt), cand(ns * nt), acc(ns * nt), gain(ns * nt),
       tick_rate(ns * nt);
@@ -221,9 +215,7 @@ void bench_point(std::ostream& out, const DsmcBenchOptions& o, std::size_t n) {
       out << buf;
       std::string extra;
       if (cases[s].scheme == dsmc::Scheme::lanes) {
-        const std::uint32_t m = cases[s].lane_size
-                                    ? cases[s].lane_size
-                                    : dsmc::detail::default_lane_size(Particles<D>::stride);
+        const std::uint32_t m = dsmc::detail::lane_size_of(cases[s], Particles<D>::stride);
         std::snprintf(buf, sizeof buf, ",\"lanes\":%u,\"lane_size\":%u,\"epoch\":%.17g",
                       dsmc::detail::LaneLayout::make(static_cast<std::uint32_t>(n), m).lanes, m,
                       cases[s].epoch);

@@ -25,10 +25,15 @@ class SpeedBound {
   /// Sets the bound from the exact maximum speed of `p` (O(N) sequential scan).
   template <int D, Features F>
   void rescan(const Particles<D, F>& p) {
+    rescan(p, 0, p.size());
+  }
+  /// The same over particles [b, e) only (a lane of the lanes scheme).
+  template <int D, Features F>
+  void rescan(const Particles<D, F>& p, std::size_t b, std::size_t e) {
     double m = 0.0;
     const double* v = p.velocity_data().data();
     constexpr int S = Particles<D, F>::stride;
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t i = b; i < e; ++i) {
       double s = 0.0;
       for (int k = 0; k < D; ++k) s += v[i * S + k] * v[i * S + k];
       m = std::max(m, s);
@@ -44,6 +49,8 @@ class SpeedBound {
   bool exceeded_by(double v2) const { return v2 > limit2_; }
   /// G: upper bound of |v_i - v_j| over all pairs.
   double bound() const { return bound_; }
+  /// G^a, the factor of the candidate rate for the rate exponent a.
+  double bound_power(double a) const { return a == 1.0 ? bound_ : std::pow(bound_, a); }
 
  private:
   double limit2_ = 0.0;

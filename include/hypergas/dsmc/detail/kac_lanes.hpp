@@ -141,28 +141,17 @@ struct LaneView {
 template <class Hook, int D, class Model, Features F>
 LaneCounts kac_lane(State<D, Model, F>& s, std::uint32_t b, std::uint32_t m, double h, Rng rng,
                     const Hook& hook) {
-  constexpr int S = State<D, Model, F>::stride;
   LaneCounts out;
   if (m < 2 || !(h > 0.0)) return out;
   LaneView<D, Model, F> view{s.p, s.model, s.impulse, b, m, CandidateStream(rng()), {}};
-  if constexpr (Model::needs_majorant) {
-    const double* v = s.p.velocity_data().data();
-    double m2 = 0.0;
-    for (std::size_t i = b; i < std::size_t(b) + m; ++i) {
-      double u = 0.0;
-      for (int k = 0; k < D; ++k) u += v[i * S + k] * v[i * S + k];
-      m2 = std::max(m2, u);
-    }
-    view.bound.set(m2);
-  }
+  if constexpr (Model::needs_majorant) view.bound.rescan(s.p, b, std::size_t(b) + m);
   const double a = s.model.exponent();
   double t = 0.0;
   std::uint64_t K = 0;  // the lane's candidates so far in this segment
   Lane lane;
   for (;;) {
     double ga = 1.0;
-    if constexpr (Model::needs_majorant)
-      ga = a == 1.0 ? view.bound.bound() : std::pow(view.bound.bound(), a);
+    if constexpr (Model::needs_majorant) ga = view.bound.bound_power(a);
     const double rest = h - t;
     std::poisson_distribution<std::uint64_t> pois(0.5 * m * s.c * ga * rest);
     const std::uint64_t M = pois(rng);
@@ -173,25 +162,13 @@ LaneCounts kac_lane(State<D, Model, F>& s, std::uint32_t b, std::uint32_t m, dou
     if (!lane.raised) break;
     // the raise stops the lane's epoch at candidate k of M: the k-th of M uniform order
     // statistics on [t, h] (stepping.hpp, advance_exact)
-    std::gamma_distribution<double> ga_k(static_cast<double>(k)),
-        gb(static_cast<double>(M - k + 1));
-    const double x = ga_k(rng), y = gb(rng);
-    t = std::min(t + rest * (x / (x + y)), h);
+    t = std::min(t + rest * order_statistic(rng, k, M), h);
     view.bound.set(lane.raise_s2);
     if (!(t < h)) break;
   }
   out.collisions = lane.collisions;
   out.candidates = K;
   return out;
-}
-
-/// Unbiased integer in [0, range) from rng (Lemire's method with rejection).
-inline std::uint32_t lane_bounded(Rng& rng, std::uint32_t range) {
-  for (;;) {
-    const std::uint64_t m = std::uint64_t(static_cast<std::uint32_t>(rng() >> 32)) * range;
-    const auto low = static_cast<std::uint32_t>(m);
-    if (low >= range || low >= (0u - range) % range) return static_cast<std::uint32_t>(m >> 32);
-  }
 }
 
 /// Deal k >= 1 within one task: lanes a and b exchange a uniformly random half (the
@@ -201,8 +178,8 @@ void exchange_halves(Particles<D, F>& p, std::uint32_t a0, std::uint32_t ma, std
                      std::uint32_t mb, Rng& rng) {
   const std::uint32_t k = std::min(ma, mb) / 2;
   // partial Fisher-Yates: the first k slots of each lane become a uniform random k-subset
-  for (std::uint32_t q = 0; q < k; ++q) p.swap(a0 + q, a0 + q + lane_bounded(rng, ma - q));
-  for (std::uint32_t q = 0; q < k; ++q) p.swap(b0 + q, b0 + q + lane_bounded(rng, mb - q));
+  for (std::uint32_t q = 0; q < k; ++q) p.swap(a0 + q, a0 + q + rng.below(ma - q));
+  for (std::uint32_t q = 0; q < k; ++q) p.swap(b0 + q, b0 + q + rng.below(mb - q));
   for (std::uint32_t q = 0; q < k; ++q) p.swap(a0 + q, b0 + q);
 }
 
@@ -236,23 +213,20 @@ class LaneTeam {
   template <class Task>
   void run(std::uint32_t tasks, tally::Tally* main, Task&& task) {
     const int T = std::min<int>(threads_, static_cast<int>(std::max<std::uint32_t>(tasks, 1)));
-    if (main)
-      for (int t = static_cast<int>(deltas_.size()); t < T; ++t) deltas_.emplace_back();
-    if (main)
+    if (main) {
+      if (deltas_.size() < std::size_t(T)) deltas_.resize(std::size_t(T));
       for (int t = 1; t < T; ++t)
         if (!(deltas_[std::size_t(t)].layout() == main->layout()))
           deltas_[std::size_t(t)] = tally::Tally(main->layout());
+    }
     const auto work = [&](int t, std::atomic<std::uint32_t>* next) {
-      if (main) {
-        const TallyHook hook{t == 0 ? main : &deltas_[std::size_t(t)]};
+      const auto take = [&](const auto& hook) {
         for (std::uint32_t q = next ? next->fetch_add(1) : 0; q < tasks;
              q = next ? next->fetch_add(1) : q + 1)
           task(q, hook);
-      } else {
-        for (std::uint32_t q = next ? next->fetch_add(1) : 0; q < tasks;
-             q = next ? next->fetch_add(1) : q + 1)
-          task(q, NoHook{});
-      }
+      };
+      if (main) take(TallyHook{t == 0 ? main : &deltas_[std::size_t(t)]});
+      else take(NoHook{});
     };
     if (T <= 1 || !team_) {
       work(0, nullptr);
@@ -278,8 +252,7 @@ class LaneTeam {
 /// Deal 0: a uniform random permutation of all particles.
 template <int D, Features F>
 void shuffle_all(Particles<D, F>& p, Rng rng) {
-  for (std::size_t i = p.size() - 1; i > 0; --i)
-    p.swap(i, lane_bounded(rng, static_cast<std::uint32_t>(i + 1)));
+  for (std::size_t i = p.size() - 1; i > 0; --i) p.swap(i, rng.below(i + 1));
 }
 
 /// The lanes scheme up to t_end: segments between deals, kicks, observations and t_end.
@@ -309,7 +282,7 @@ void advance_lanes(State<D, Model, F>& s, LaneTeam& team, const std::function<vo
       order.resize(L);
       for (std::uint32_t l = 0; l < L; ++l) order[l] = l;
       Rng r = deal_rng.split(1);
-      for (std::uint32_t l = L - 1; l > 0; --l) std::swap(order[l], order[lane_bounded(r, l + 1)]);
+      for (std::uint32_t l = L - 1; l > 0; --l) std::swap(order[l], order[r.below(l + 1)]);
     }
     const std::uint32_t tasks = pairs ? (L + 1) / 2 : L;
     team.run(tasks, s.tally.tally.get(), [&](std::uint32_t q, const auto& hook) {

@@ -25,16 +25,15 @@ namespace hypergas::dsmc::detail {
 /// it; without a team the one-thread loop runs).
 class ParallelBlocks {
  public:
-  /// `threads` (1 .. 256, checked by the caller), `block` candidates per block. Only an explicit block size starts the block schedule:
-  /// on its own the exact scheme runs the one-thread loop whatever T is, because the
-  /// schedule measured slower than one thread on the machines this code runs on (0.50x at
-  /// 1e5, 0.89x at 1e6, 0.83x at 1e7 particles in 3D; docs/benchmarks.md, "One system on T
-  /// threads"). The lanes scheme is what uses T threads.
+  /// `threads` (1 .. 256, checked by the caller), `block` candidates per block. Only an
+  /// explicit block size starts the block schedule: on its own the exact scheme runs the
+  /// one-thread loop whatever T is, because the schedule measured slower than one thread
+  /// (0.50x at 1e5, 0.89x at 1e6, 0.83x at 1e7 particles in 3D on AMD EPYC;
+  /// docs/benchmarks.md, "One system on T threads"). The lanes scheme is what uses T threads.
   void configure(int threads, std::uint32_t block) {
     threads_ = threads;
-    const bool parallel = block > 0;
-    block_ = parallel ? block : 0;
-    if (!parallel) {
+    block_ = block;
+    if (block == 0) {
       team_.reset();
       lanes_.clear();
       profile_.clear();

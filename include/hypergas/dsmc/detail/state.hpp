@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <random>
 #include <utility>
 
 #include "hypergas/dsmc/config.hpp"
@@ -64,6 +65,15 @@ struct FluxHook {
     f->tagged_collision(K, i, j, oi, oj);
   }
 };
+
+/// The k-th of m uniform order statistics on [0, 1], Beta(k, m - k + 1), drawn as
+/// X / (X + Y) with X ~ Gamma(k) first and Y ~ Gamma(m - k + 1): where an epoch of m
+/// candidates stopped at its k-th (stepping.hpp, kac_lanes.hpp).
+inline double order_statistic(Rng& rng, std::uint64_t k, std::uint64_t m) {
+  std::gamma_distribution<double> ga(static_cast<double>(k)), gb(static_cast<double>(m - k + 1));
+  const double x = ga(rng), y = gb(rng);
+  return x / (x + y);
+}
 
 template <class Model, int D>
 [[gnu::noinline]] Vec<D> deflect_outlined(const Vec<D>& g, double gn, EventStream& rng) {

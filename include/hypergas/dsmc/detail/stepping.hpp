@@ -23,9 +23,7 @@ namespace hypergas::dsmc::detail {
 /// lambda = N c G^a / 2 for the current bound G.
 template <int D, class Model, Features F>
 void set_lambda(State<D, Model, F>& s) {
-  const double ga =
-      s.model.exponent() == 1.0 ? s.bound.bound() : std::pow(s.bound.bound(), s.model.exponent());
-  s.lambda = 0.5 * s.n * s.c * ga;
+  s.lambda = 0.5 * s.n * s.c * s.bound.bound_power(s.model.exponent());
 }
 
 /// Resets the majorant from an exact scan (when `force` or after enough candidates).
@@ -122,10 +120,7 @@ void advance_exact(State<D, Model, F>& s, ParallelBlocks& blocks,
       s.time = capped ? s.time + h : target;
     } else {
       // k-th of m uniform order statistics on [time, time + h].
-      std::gamma_distribution<double> ga(static_cast<double>(k)),
-          gb(static_cast<double>(m - k + 1));
-      const double x = ga(s.rng), y = gb(s.rng);
-      s.time = std::min(s.time + h * (x / (x + y)), target);
+      s.time = std::min(s.time + h * order_statistic(s.rng, k, m), target);
       s.bound.set(s.raise_to);
       s.raise_to = 0.0;
       set_lambda(s);

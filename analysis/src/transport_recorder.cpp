@@ -38,10 +38,10 @@ std::vector<int> layout(int d, int tagged) {
 
 /// The correlator's series groups for these settings; throws InvalidInput on bad ones.
 std::vector<int> series_groups(const TransportSettings& s, int dim, std::size_t n) {
-  if (!(dim >= 2 && dim <= 6 && s.tagged >= 1 && s.dt > 0 && s.max_lag > s.dt &&
+  if (!(dim >= 2 && dim <= 6 && s.tagged >= 0 && s.dt > 0 && s.max_lag > s.dt &&
         s.error_blocks >= 2))
     throw InvalidInput(
-        "transport: needs D in 2..6, tagged >= 1, dt > 0, max_lag > dt and >= 2 error blocks");
+        "transport: needs D in 2..6, tagged >= 0, dt > 0, max_lag > dt and >= 2 error blocks");
   return layout(dim, static_cast<int>(std::min<std::size_t>(std::size_t(s.tagged), n)));
 }
 
@@ -154,7 +154,8 @@ const std::vector<TransportCoefficient>& TransportRecorder::finish() {
   const double dt = set_.dt;
   const double c0_mb[n_groups] = {1.0, (dim_ + 2.0) / 2.0, 1.0};
   const int J = corr_.stretches();
-  for (int g = 0; g < n_groups; ++g) {
+  const int groups = tagged_.empty() ? 2 : n_groups;  // no tagged particles: no diffusion
+  for (int g = 0; g < groups; ++g) {
     const std::vector<double> c = corr_.mean(g);
     const std::vector<double> I = running_integral(c, dt);
     const std::size_t cut = detail::auto_cut(c, I, dt, set_.window);
@@ -194,7 +195,7 @@ const std::vector<TransportCoefficient>& TransportRecorder::finish() {
   // [C_d(0) + 2 sum_{l >= 1} C_d(l)] / dt per component (the same cut and tail rule as the
   // velocity autocorrelation, the tail of the sum geometric: C_d(k_c) q / (1 - q),
   // q = exp(-g dt))
-  {
+  if (!tagged_.empty()) {
     const std::vector<double> cd = corr_.mean(3);
     const std::size_t cut = static_cast<std::size_t>(std::llround(result_[2].t_cut / dt));
     const std::vector<double> I = running_integral(cd, dt);
@@ -260,9 +261,11 @@ void TransportRecorder::write_correlations_csv(const std::string& path) const {
   for (std::size_t k = 0; k < curves_[0].size(); ++k) {
     const double t = static_cast<double>(k) * set_.dt;
     std::vector<double> row{t};
-    for (int g = 0; g < n_groups; ++g) {
-      row.push_back(curves_[std::size_t(g)][k]);
-      row.push_back(std::exp(-t * result_[std::size_t(g)].sonine_rate));
+    for (int g = 0; g < n_groups; ++g) {  // no tagged particles: the last two columns empty
+      const bool has = std::size_t(g) < curves_.size();
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      row.push_back(has ? curves_[std::size_t(g)][k] : nan);
+      row.push_back(has ? std::exp(-t * result_[std::size_t(g)].sonine_rate) : nan);
     }
     rows.push_back(std::move(row));
   }

@@ -172,10 +172,12 @@ void validate_scheme(const RunOptions& o) {
       if (o.was_given(k)) reject(fmt::format("{} applies with --scheme lanes only", k));
   if (s == dsmc::Scheme::lanes && o.lane_size == 1)
     reject("--lane-size must be 0 (the default) or at least 2");
-  if (s != dsmc::Scheme::exact && o.transport)
-    reject(fmt::format("--transport needs --scheme exact: its tagged particles and collision "
-                       "times are those of the exact process, not of --scheme {}",
-                       o.scheme));
+  if (s == dsmc::Scheme::ntc && o.transport)
+    reject("--transport needs --scheme exact or lanes: its fluxes are kept collision by "
+           "collision in continuous time, which --scheme ntc does not have");
+  if (s == dsmc::Scheme::lanes && o.transport && o.was_given("--tagged"))
+    reject("--tagged needs --scheme exact: the lanes scheme's deals move particles between "
+           "slots, so with lanes --transport measures viscosity and thermal conductivity only");
 }
 
 void validate_transport(const RunOptions& o) {

@@ -141,7 +141,9 @@ void bind_observers(py::module_& m) {
                throw InvalidInput("warmup must be finite and >= 0");
              if (!(std::isfinite(max_lag) && max_lag >= 4.0 * dt && max_lag <= 1e4))
                throw InvalidInput("max_lag must be at least 4 dt and at most 1e4");
-             if (t < 1 || t > 4096) throw InvalidInput("tagged must be in 1..4096");
+             if (t < 0 || t > 4096)
+               throw InvalidInput("tagged must be in 0..4096 (0: no self-diffusion, as the "
+                                  "lanes scheme needs)");
              if (!(until - warmup >= 10.0 * max_lag))
                throw InvalidInput("until must be at least warmup + 10 max_lag (ten correlation "
                                   "windows)");

@@ -306,8 +306,10 @@ TEST_CASE("run: a scheme's options without that scheme, or out of range, are rej
   expect_rejected({"run", "--scheme", "lanes", "--lane-size", "1"},
                   "--lane-size must be 0 (the default) or at least 2");
   expect_rejected({"run", "--scheme", "lanes", "--epoch", "0"}, "--epoch must be a finite time > 0");
-  expect_rejected({"run", "--scheme", "lanes", "--transport", "--until", "420"},
-                  "--transport needs --scheme exact");
+  expect_rejected({"run", "--scheme", "ntc", "--transport", "--until", "420"},
+                  "--transport needs --scheme exact or lanes");
+  expect_rejected({"run", "--scheme", "lanes", "--transport", "--tagged", "8", "--until", "420"},
+                  "--tagged needs --scheme exact");
   expect_rejected({"run", "--engine", "edmd", "--scheme", "lanes"},
                   "--scheme applies to --engine dsmc only");
 }

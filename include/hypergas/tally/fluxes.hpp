@@ -92,11 +92,28 @@ class Fluxes {
     }
   }
 
+  /// The same fluxes at zero, with no tagged particles: a thread's share of the changes,
+  /// added back by merge() (the lanes scheme, dsmc/detail/kac_lanes.hpp).
+  Fluxes delta() const {
+    Fluxes d;
+    d.dim_ = dim_;
+    d.c_ = c_;
+    d.acc_.assign(acc_.size(), int128{0});
+    return d;
+  }
+  /// Adds the changes `d` kept (a delta() of these fluxes) and sets d to zero. The sums are
+  /// integers, so the order of merges does not matter.
+  void merge(Fluxes& d) {
+    if (d.dim_ != dim_ || d.c_ != c_ || d.acc_.size() != acc_.size())
+      throw InvalidInput("fluxes: merge of fluxes of another gas");
+    for (std::size_t k = 0; k < acc_.size(); ++k) acc_[k] += d.acc_[k], d.acc_[k] = 0;
+  }
+
   /// Tags particles `idx` (of n) for exact virtual displacements x = int v dt, from zero
   /// now. Every later collision of a tagged particle must be reported by tagged_collision
   /// with its candidate number and every epoch by epoch().
   void tag(const std::vector<std::uint32_t>& idx, std::size_t n, std::uint64_t seed) {
-    tag_of_.assign(n, -1);
+    tag_of_.assign(idx.empty() ? 0 : n, -1);  // none: tagged_collision returns at once
     for (std::size_t a = 0; a < idx.size(); ++a) tag_of_.at(idx[a]) = static_cast<std::int32_t>(a);
     tagged_ = idx;
     x_.assign(idx.size() * std::size_t(dim_), 0.0);

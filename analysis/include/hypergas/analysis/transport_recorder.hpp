@@ -58,7 +58,8 @@ namespace hypergas::analysis {
 struct TransportSettings {
   double dt = 0.05;         ///< grid spacing of the samples (mean collision times)
   double max_lag = 40.0;    ///< longest lag of the correlations (mean collision times)
-  int tagged = 32;          ///< tagged particles for self-diffusion (at most N)
+  int tagged = 32;          ///< tagged particles for self-diffusion (at most N; 0: no
+                            ///< self-diffusion rows, as the lanes scheme needs)
   double warmup = 20.0;     ///< time before the first sample (relaxation of the start)
   double window = 3.0;      ///< integral times up to the cut (see the file comment)
   int error_blocks = 32;    ///< stretches for the standard errors

@@ -37,8 +37,9 @@
 // are bit for bit the same for every thread count.
 //
 // Particle identity: a deal moves particles between array slots. Observers of the whole
-// gas (moments, histograms) are unaffected; particle i is not the same particle across
-// deals, so collective fluxes with tagged particles (--transport) need the exact scheme.
+// gas (moments, histograms, the collective stress and heat flux of --transport, kept by
+// the collisions through LaneFluxHook) are unaffected; particle i is not the same particle
+// across deals, so tagged particles (self-diffusion) need the exact scheme.
 #pragma once
 
 #include <algorithm>
@@ -209,9 +210,10 @@ class LaneTeam {
 
   /// Runs task(q, hook of the thread) for q = 0 .. tasks - 1 on the team, in any order.
   /// With a tally, thread 0 reports to it and the others to their own deltas, merged after
-  /// (exact sums: the same for any thread count).
-  template <class Task>
-  void run(std::uint32_t tasks, tally::Tally* main, Task&& task) {
+  /// (exact sums: the same for any thread count). WithFluxes: the same for the collective
+  /// fluxes `fluxes` (not null), through LaneFluxHook.
+  template <bool WithFluxes = false, class Task>
+  void run(std::uint32_t tasks, tally::Tally* main, tally::Fluxes* fluxes, Task&& task) {
     const int T = std::min<int>(threads_, static_cast<int>(std::max<std::uint32_t>(tasks, 1)));
     if (main) {
       if (deltas_.size() < std::size_t(T)) deltas_.resize(std::size_t(T));
@@ -219,14 +221,23 @@ class LaneTeam {
         if (!(deltas_[std::size_t(t)].layout() == main->layout()))
           deltas_[std::size_t(t)] = tally::Tally(main->layout());
     }
+    if constexpr (WithFluxes) {
+      flux_deltas_.resize(std::size_t(T));
+      for (int t = 1; t < T; ++t) flux_deltas_[std::size_t(t)] = fluxes->delta();
+    }
     const auto work = [&](int t, std::atomic<std::uint32_t>* next) {
       const auto take = [&](const auto& hook) {
         for (std::uint32_t q = next ? next->fetch_add(1) : 0; q < tasks;
              q = next ? next->fetch_add(1) : q + 1)
           task(q, hook);
       };
-      if (main) take(TallyHook{t == 0 ? main : &deltas_[std::size_t(t)]});
-      else take(NoHook{});
+      tally::Tally* mine = main ? (t == 0 ? main : &deltas_[std::size_t(t)]) : nullptr;
+      if constexpr (WithFluxes)
+        take(LaneFluxHook{t == 0 ? fluxes : &flux_deltas_[std::size_t(t)], mine});
+      else if (mine)
+        take(TallyHook{mine});
+      else
+        take(NoHook{});
     };
     if (T <= 1 || !team_) {
       work(0, nullptr);
@@ -236,17 +247,20 @@ class LaneTeam {
         if (t < T) work(t, &next);
       });
     }
-    if (main)
-      for (int t = 1; t < T; ++t) {
+    for (int t = 1; t < T; ++t) {
+      if (main) {
         main->merge(deltas_[std::size_t(t)]);
         deltas_[std::size_t(t)].clear();
       }
+      if constexpr (WithFluxes) fluxes->merge(flux_deltas_[std::size_t(t)]);
+    }
   }
 
  private:
   int threads_ = 1;
   std::unique_ptr<ThreadTeam> team_;
   std::vector<tally::Tally> deltas_;
+  std::vector<tally::Fluxes> flux_deltas_;
 };
 
 /// Deal 0: a uniform random permutation of all particles.
@@ -259,9 +273,10 @@ void shuffle_all(Particles<D, F>& p, Rng rng) {
 template <int D, class Model, Features F>
 void advance_lanes(State<D, Model, F>& s, LaneTeam& team, const std::function<void()>& poll,
                    double t_end) {
-  if (s.tally.fluxes)
-    throw InvalidInput("DSMC: collective fluxes (transport) need the exact scheme: the lanes "
-                       "scheme moves particles between slots");
+  tally::Fluxes* const fluxes = s.tally.fluxes.get();
+  if (fluxes && (F.species || fluxes->tagged() > 0))
+    throw InvalidInput("DSMC: the lanes scheme keeps collective fluxes of one species without "
+                       "tagged particles only: a deal moves particles between slots");
   const LaneLayout lay = LaneLayout::make(s.n, lane_size_of(s.cfg, State<D, Model, F>::stride));
   const std::uint32_t L = lay.lanes;
   std::vector<LaneCounts> counts(L);
@@ -285,7 +300,7 @@ void advance_lanes(State<D, Model, F>& s, LaneTeam& team, const std::function<vo
       for (std::uint32_t l = L - 1; l > 0; --l) std::swap(order[l], order[r.below(l + 1)]);
     }
     const std::uint32_t tasks = pairs ? (L + 1) / 2 : L;
-    team.run(tasks, s.tally.tally.get(), [&](std::uint32_t q, const auto& hook) {
+    const auto task = [&](std::uint32_t q, const auto& hook) {
       if (!pairs) {
         counts[q] = kac_lane(s, lay.begin(q), lay.count(q), h, lane_rng.split(q), hook);
         return;
@@ -300,7 +315,14 @@ void advance_lanes(State<D, Model, F>& s, LaneTeam& team, const std::function<vo
         counts[b] = kac_lane(s, lay.begin(b), lay.count(b), h, lane_rng.split(b), hook);
       }
       counts[a] = kac_lane(s, lay.begin(a), lay.count(a), h, lane_rng.split(a), hook);
-    });
+    };
+    // the flux hook is compiled for one species only (as in the exact scheme, stepping.hpp)
+    if constexpr (!F.species) {
+      if (fluxes) team.run<true>(tasks, s.tally.tally.get(), fluxes, task);
+      else team.run(tasks, s.tally.tally.get(), nullptr, task);
+    } else {
+      team.run(tasks, s.tally.tally.get(), nullptr, task);
+    }
     const double t0 = s.time;
     for (const LaneCounts& c : counts) {
       s.collisions += c.collisions;

@@ -27,7 +27,7 @@ namespace hypergas::dsmc::detail {
 
 /// What a collision reports to: nothing (NoHook, the plain kernel), a tally (TallyHook: the
 /// old and new velocities of both particles, hypergas/tally/tally.hpp) or collective fluxes
-/// (FluxHook, hypergas/tally/fluxes.hpp).
+/// (FluxHook and LaneFluxHook, hypergas/tally/fluxes.hpp).
 /// The candidate loop is compiled once for each, so a run without a tally runs the
 /// same code as an engine that has none.
 struct NoHook {
@@ -46,8 +46,11 @@ struct TallyHook {
     t->exchange<D, F.species>(oi, oj, ni, nj, si, sj);
   }
 };
-/// Collective fluxes (tally/fluxes.hpp: one species only), with or without a tally.
-template <bool WithTally>
+/// Collective fluxes (tally/fluxes.hpp: one species only), with or without a tally (t may
+/// be null: the branch is the same at every collision). Tagged: the fluxes' tagged particles
+/// hear of every candidate (the exact scheme); the lanes scheme has none (LaneFluxHook), so
+/// its candidate loop is compiled once more per engine, not twice.
+template <bool WithTally, bool Tagged = true>
 struct FluxHook {
   static constexpr bool active = true;
   tally::Fluxes* f = nullptr;
@@ -57,14 +60,18 @@ struct FluxHook {
                                        std::uint32_t j, const double* oi, const double* oj,
                                        const double* ni, const double* nj) const {
     f->exchange<D>(oi, oj, ni, nj);
-    if constexpr (WithTally) TallyHook{t}.collided(p, i, j, oi, oj, ni, nj);
+    if constexpr (WithTally)
+      if (t) TallyHook{t}.collided(p, i, j, oi, oj, ni, nj);
   }
   /// Candidate K collided i and j (old velocities oi, oj): tagged particles' displacements.
   [[gnu::always_inline]] void at_candidate(std::uint64_t K, std::uint32_t i, std::uint32_t j,
-                                           const double* oi, const double* oj) const {
+                                           const double* oi, const double* oj) const
+    requires Tagged
+  {
     f->tagged_collision(K, i, j, oi, oj);
   }
 };
+using LaneFluxHook = FluxHook<true, false>;
 
 /// The k-th of m uniform order statistics on [0, 1], Beta(k, m - k + 1), drawn as
 /// X / (X + Y) with X ~ Gamma(k) first and Y ~ Gamma(m - k + 1): where an epoch of m

@@ -33,6 +33,7 @@ packages=(
 )
 python_packages=(
   python3-dev pybind11-dev python3-numpy # the Python module
+  libhdf5-dev python3-h5py               # H5MD trajectories (--trajectory-every) and h5py
   python3-matplotlib python3-pytest python3-tqdm  # its example, tests and progress bar
 )
 case "$level" in
@@ -45,7 +46,9 @@ case "$level" in
     config=(-DHYPERGAS_BUILD_TESTS=OFF -DHYPERGAS_PYTHON=ON) ;;
   all)
     # Open MPI: sweeps over ranks (the command builds without it); pandas: read_sweep's frames
-    packages+=(catch2 libopenmpi-dev openmpi-bin python3-pandas "${python_packages[@]}")
+    # hdf5-tools: h5diff in the resume tests; python3-mdanalysis: its H5MD reader in a test
+    packages+=(catch2 libopenmpi-dev openmpi-bin python3-pandas hdf5-tools python3-mdanalysis
+               "${python_packages[@]}")
     targets=()
     config=(-DHYPERGAS_BUILD_TESTS=ON -DHYPERGAS_PYTHON=AUTO) ;;
 esac

@@ -14,6 +14,7 @@
 
 #include "hypergas/analysis/output.hpp"
 #include "hypergas/conserved.hpp"
+#include "init_file.hpp"
 #include "options.hpp"
 #include "outputs/moments.hpp"
 #include "outputs/output.hpp"
@@ -47,12 +48,14 @@ RunRecord simulate(const RunOptions& o, bool progress);
 // conserved sums at t = 0, the checkpointable outputs in list order, the engine.
 // start_engine reads that order and save_run writes it, for both engines.
 
-/// Constructs `e` from cfg and sets c0 to its conserved sums; or, resuming (ctx.resume),
+/// Constructs `e` from cfg (or from o's --init-file) and sets c0 to its conserved sums; or,
+/// resuming (ctx.resume),
 /// restores st, c0, the outputs and the engine from the checkpoint. Returns the engine.
 template <class Engine>
 Engine& start_engine(std::optional<Engine>& e, const typename Engine::Config& cfg,
                      RunContext& ctx, DriverState& st, Conserved<Engine::dim>& c0,
-                     const std::vector<std::unique_ptr<Output>>& outputs) {
+                     const std::vector<std::unique_ptr<Output>>& outputs,
+                     const RunOptions& o) {
   if (ctx.resume) {
     (*ctx.resume)(st, c0);
     for (const auto& out : outputs) out->load(*ctx.resume);
@@ -60,7 +63,8 @@ Engine& start_engine(std::optional<Engine>& e, const typename Engine::Config& cf
     ctx.resume->finish();
     ++st.resumes;
   } else {
-    e.emplace(cfg);
+    if (o.init_file.empty()) e.emplace(cfg);
+    else emplace_from_file(e, cfg, o.init_file, o.init_frame);  // init_file.hpp
     c0 = conserved(e->particles());
   }
   return *e;

@@ -58,9 +58,10 @@ std::string foreign_entry(const fs::path& dir, const std::vector<std::string>& o
   for (const auto& e : fs::directory_iterator(dir, ec)) names.push_back(e.path().filename());
   std::sort(names.begin(), names.end());
   for (const std::string& n : names) {
-    // the run's own bookkeeping: its checkpoint (and the checkpoint's temporary file) and
-    // the manifest
-    if (n == manifest || n == manifest + ".tmp" || n.rfind(Checkpointer::file_name, 0) == 0)
+    // the run's own bookkeeping: its checkpoint (and the checkpoint's temporary file), the
+    // trajectory it is writing and the manifest
+    if (n == manifest || n == manifest + ".tmp" || n.rfind(Checkpointer::file_name, 0) == 0 ||
+        n == OutputDir::trajectory_partial)
       continue;
     if (std::find(owned.begin(), owned.end(), n) == owned.end()) return n;
   }

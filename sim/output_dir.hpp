@@ -48,6 +48,9 @@ class OutputDir {
   const std::vector<std::string>& committed() const { return committed_; }
   /// The file in which a commit lists the names it wrote.
   static constexpr const char* manifest = ".hypergas-files";
+  /// The trajectory a run writes as it goes (sim/outputs/trajectory.cpp): the run's own file,
+  /// like its checkpoint, moved to trajectory.h5 by the commit.
+  static constexpr const char* trajectory_partial = "trajectory.h5.partial";
 
  private:
   std::filesystem::path dir_;

@@ -78,7 +78,7 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
       const SetupLine line(fmt::format("dsmc: setting up {} particles ({} velocities)", o.n,
                                        o.init),
                            progress && !ctx.resume);
-      start_engine(engine, cfg, ctx, st0, c0, rec.outputs);
+      start_engine(engine, cfg, ctx, st0, c0, rec.outputs, o);
     }
     body(0, *engine, st0, c0, ctx.checkpoints);
   } else {

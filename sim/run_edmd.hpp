@@ -52,12 +52,14 @@ RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
   edmd::Config elastic = cfg;
   elastic.restitution = 1.0;  // the equilibration
   Engine& engine = [&]() -> Engine& {
-    const SetupLine line(fmt::format("edmd: setting up {} particles at packing {} (lattice "
-                                     "start{})",
-                                     o.n, o.packing,
-                                     o.was_given("--start-packing") ? ", compression" : ""),
-                         progress && !ctx.resume);
-    return start_engine(e, elastic, ctx, st, c0, rec.outputs);
+    const SetupLine line(
+        o.init_file.empty()
+            ? fmt::format("edmd: setting up {} particles at packing {} (lattice start{})", o.n,
+                          o.packing, o.was_given("--start-packing") ? ", compression" : "")
+            : fmt::format("edmd: reading {} particles at packing {:.6g} from {}", o.n,
+                          o.packing, o.init_file),
+        progress && !ctx.resume);
+    return start_engine(e, elastic, ctx, st, c0, rec.outputs, o);
   }();
   const double setup_s = std::chrono::duration<double>(Clock::now() - t0).count();
   // a lattice start with vacancies (N below the lattice's sites) is said, not hidden

@@ -132,7 +132,7 @@ class SweepDir {
 /// and equilibrated by default over that span, which writes nothing; a case of the plan
 /// writes the same keys.
 void check_plot_key(const sweep::Plan& plan, RunOptions o) {
-  o.n = std::min(o.n, 1000LL);
+  if (o.init_file.empty()) o.n = std::min(o.n, 1000LL);  // an init file sets N
   o.replicas = 1;
   o.threads = 1;
   if (!o.transport) o.until = std::min(o.until, 1.0);

@@ -62,6 +62,9 @@ const Option table[] = {
   {"every", 0, E::both, U::span, &R::every, {pos_open, 1e308, true, false, "a finite interval > 0"}, nullptr, nullptr, time_unit, "sampling interval, rounded so that it divides the sampled span: the rows are evenly spaced and the last is at --until (include/hypergas/schedule.hpp)", "until/50", false, false},
   {"equilibration", 0, E::edmd, U::command, &R::equilibration, {pos_open, 1e12, true, false, "a finite time > 0, below --until"}, nullptr, nullptr, time_unit, "time the start equilibrates before sampling begins: the measurement window (Z, collision rate, the outputs) is [T, --until]", "until/5", false, false},
   {"histogram-every", 0, E::both, U::command, &R::histogram_every, {pos_open, 1e308, true, false, "a finite interval > 0"}, nullptr, nullptr, time_unit, "also write speed_histograms.csv (and speed_histograms.png): the speed histogram at every m-th sampling instant from the first, m = round(T / sampling interval), at least 1", "off", false, false},
+  {"trajectory-every", 0, E::both, U::command, &R::trajectory_every, {pos_open, 1e308, true, false, "a finite interval > 0"}, nullptr, nullptr, time_unit, "also write trajectory.h5 (H5MD 1.1, docs/h5md.md: velocities; EDMD also positions, images and the box; observables): a frame at every m-th sampling instant from the first, m = round(T / sampling interval), at least 1; h5py and MDAnalysis read it", "off", false, false},
+  {"init-file", 0, E::both, U::command, &R::init_file, {}, nullptr, nullptr, "", "start from the state in this H5MD file (a trajectory.h5, or any H5MD file with velocities; EDMD also positions in a cubic periodic box): it sets --dim and --n (EDMD: --packing too), one species of unit mass; the run starts at t = 0 with its own seed", "", false, false},
+  {"init-frame", 0, E::both, U::command, &R::init_frame, {-1e15, 1e15, false, false, "an integer frame index, |K| <= 1e15"}, nullptr, nullptr, "", "with --init-file: the frame to start from, 0 the first, negative from the end (-1 the last)", "-1 (the last)", false, false},
   {"restitution", 0, E::both, U::engine, &R::restitution, {0, 1, false, false, "in [0, 1]"}, nullptr, nullptr, "", "coefficient of normal restitution alpha: each collision's impulse along the normal is scaled by (1 + alpha)/2 and the gas cools (granular gas; 1 = elastic). dsmc: the freely cooling gas is kept in scaled velocities, time runs in mean collision times at the current temperature, and moments.csv gives T and real_time (docs/validation.md)", "", false, false},
   {"scheme", 0, E::dsmc, U::engine, &R::scheme, {}, check_scheme, schemes_help, "", "time scheme. exact: the reference, and as fast as any below about 1e6 particles; lanes: from about 1e6 particles or for more than one thread (1.7-2.5x exact on one core at 1e6-1e7 in 3D, 1/M bias in the dynamics, exact equilibrium; docs/validation.md, \"The lanes scheme\"); ntc: Bird's scheme, for comparison:", "", false, false},
   {"dt", 0, E::dsmc, U::engine, &R::dt, {pos_open, 1e308, true, false, "a finite step > 0"}, nullptr, nullptr, "mean collision times", "with --scheme ntc: the time step", "", false, false},
@@ -176,6 +179,9 @@ RunOptions defaults(registry::EngineKind e) {
   o.until = dsmc ? 10.0 : 20.0;
   o.every = 0.0;  // Schedule::default_intervals
   o.histogram_every = 0.0;
+  o.trajectory_every = 0.0;
+  o.init_file.clear();
+  o.init_frame = -1;
   o.equilibration = 0.0;
   o.threads = 1;
   o.replicas = 1;

@@ -19,7 +19,9 @@ command's moments.csv), :class:`MomentsRecorder` and :class:`VacfRecorder` (the 
 recorders, fed by ``run(observers=...)``), :func:`vacf`, :func:`msd`, :func:`maxwell_pdf`,
 :func:`maxwell_cdf` and :func:`report` (error against run time).
 
-Runs with files: :func:`run` is ``hypergas run`` (the same options, outputs and files).
+Runs with files: :func:`run` is ``hypergas run`` (the same options, outputs and files;
+``trajectory_every=`` writes trajectory.h5, ``init_file=`` starts from one).
+:func:`read_trajectory` reads an H5MD file; :meth:`EDMD.from_state` starts from a frame.
 
 Sweeps: :func:`read_sweep` reads the tables (sweep.csv, groups.csv) of a folder written by
 ``hypergas sweep``.
@@ -45,6 +47,7 @@ from ._analysis import (Analysis, Report, SpeedHistogram, analyse, maxwell_cdf, 
                         TransportRecorder, HelfandRecorder, StructureRecorder)
 from ._sweep import read_sweep
 from ._run import run
+from ._trajectory import Trajectory, read_trajectory
 from . import _hypergas
 
 models = tuple(_hypergas.model_names())
@@ -55,4 +58,4 @@ jamming_packing = _hypergas.jamming_packing
 __all__ = ["DSMC", "EDMD", "Analysis", "Report", "SpeedHistogram", "analyse", "maxwell_pdf",
            "maxwell_cdf", "vacf", "msd", "report", "MomentsRecorder", "VacfRecorder",
            "TransportRecorder", "HelfandRecorder", "StructureRecorder",
-           "read_sweep", "run", "models", "initial_states", "schemes", "jamming_packing"]
+           "read_sweep", "run", "read_trajectory", "Trajectory", "models", "initial_states", "schemes", "jamming_packing"]

@@ -286,6 +286,23 @@ class EDMD(_Engine):
         super().__init__(_hypergas.make_edmd(**given))
         self.seed = int(given.get("seed", _DEFAULTS["edmd"]["seed"]))
 
+    @classmethod
+    def from_state(cls, positions, velocities, *, box, **kwargs):
+        """An EDMD gas that starts from given positions and velocities (copied), shape
+        (n, dim), in the periodic cube of side ``box`` (sigma units; positions are wrapped
+        into [0, box)). The packing fraction follows: n spheres of diameter 1 in box^dim.
+        No two spheres may overlap (ValueError naming the pair and by how much). Velocities
+        are taken as given: a state written by hypergas (kT = 1) continues unchanged. The
+        other keyword arguments are the constructor's, less those that the state fixes (dim,
+        n, packing, start_packing) or that describe a generated start (init, ...).
+        ``hypergas.read_trajectory(path).state(k)`` gives the arguments of a saved frame.
+        """
+        self = cls.__new__(cls)
+        given = {k: v for k, v in kwargs.items() if v is not None}
+        _Engine.__init__(self, _hypergas.make_edmd_from(positions, velocities, box, **given))
+        self.seed = int(given.get("seed", _DEFAULTS["edmd"]["seed"]))
+        return self
+
     @property
     def positions(self):
         """Read-only (n, dim) view of the positions in the box [0, L)^dim (no copy).

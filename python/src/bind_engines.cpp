@@ -18,6 +18,7 @@
 #include "engine_box.hpp"
 #include "engine_handle.hpp"
 #include "hypergas/error.hpp"
+#include "hypergas/geometry.hpp"
 #include "hypergas/observer.hpp"
 #include "hypergas/registry.hpp"
 #include "keywords.hpp"
@@ -85,6 +86,47 @@ std::unique_ptr<EngineBox> dsmc_from(const py::handle& velocities, const py::han
   return dsmc_box(make_dsmc(o, &given), o.threads);
 }
 
+/// hypergas.EDMD.from_state: an EDMD engine from given positions and velocities (n x dim)
+/// in the periodic cube of side `box` (positions are wrapped into it); the packing follows
+/// from N and the box. The other keywords as run_options reads, less the start's.
+std::unique_ptr<EngineBox> edmd_from(const py::handle& positions, const py::handle& velocities,
+                                     double box, const py::kwargs& kw) {
+  using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+  auto x = Array::ensure(positions), v = Array::ensure(velocities);
+  if (!x || !v) type_error("positions and velocities must be arrays of numbers, shape (n, dim)");
+  if (x.ndim() != 2 || v.ndim() != 2 || x.shape(0) != v.shape(0) || x.shape(1) != v.shape(1))
+    throw InvalidInput("positions and velocities must have the same shape (n, dim)");
+  if (!(std::isfinite(box) && box > 0.0)) throw InvalidInput("box must be a finite side > 0");
+  const auto n = static_cast<std::size_t>(x.shape(0));
+  const int dim = static_cast<int>(x.shape(1));
+  options::check_dim(dim, "dim");
+  options::check_n(static_cast<long long>(n), "n");
+  std::vector<double> wrapped(x.data(), x.data() + n * std::size_t(dim));
+  for (double& q : wrapped) {
+    if (!std::isfinite(q)) throw InvalidInput("positions must be finite");
+    q -= box * std::floor(q / box);
+    if (q >= box) q = 0.0;
+  }
+  for (const char* k : {"n", "dim", "packing"})  // from the state
+    if (kw.contains(k)) throw InvalidInput(std::string(k) + " follows from the state: leave it out");
+  py::kwargs all = kw;
+  all["n"] = py::int_(n);
+  all["dim"] = py::int_(dim);
+  all["packing"] = py::float_(static_cast<double>(n) * ball_volume(dim, 1.0) / std::pow(box, dim));
+  std::vector<std::string> allowed;
+  for (const std::string& k : engine_keywords(registry::EngineKind::edmd, true))
+    if (k != "packing" && k != "start_packing") allowed.push_back(k);
+  allowed.insert(allowed.end(), {"n", "dim", "packing"});
+  options::RunOptions o = run_options(registry::EngineKind::edmd, all, allowed);
+  const edmd::GivenState g{wrapped.data(), v.data(), n, box, nullptr};
+  auto out = std::make_unique<EngineBox>();
+  {
+    py::gil_scoped_release nogil;
+    out->h = make_edmd(o, &g);
+  }
+  return out;
+}
+
 }  // namespace
 
 void bind_engines(py::module_& m) {
@@ -133,6 +175,7 @@ void bind_engines(py::module_& m) {
     return dsmc_box(make_dsmc(o), o.threads);
   });
   m.def("make_dsmc_from", &dsmc_from, py::arg("velocities"), py::arg("species") = py::none());
+  m.def("make_edmd_from", &edmd_from, py::arg("positions"), py::arg("velocities"), py::arg("box"));
   m.def("make_edmd", [](const py::kwargs& kw) {
     const options::RunOptions o = run_options(registry::EngineKind::edmd, kw, engine_keywords(registry::EngineKind::edmd, false));
     auto box = std::make_unique<EngineBox>();

@@ -11,6 +11,7 @@
 
 #include "bindings.hpp"
 #include "commands.hpp"
+#include "init_file.hpp"
 #include "hypergas/options/table.hpp"
 #include "hypergas/registry.hpp"
 #include "keywords.hpp"
@@ -41,7 +42,8 @@ void bind_run(py::module_& m) {
       "run_command",
       [](const std::string& out, const std::string& engine, const py::kwargs& kw) {
         const registry::EngineKind kind = registry::engine(engine);
-        options::RunOptions o = run_options(kind, kw, run_keywords(kind));
+        // --init-file sets D and N (EDMD: the packing) from its file, as the command does
+        options::RunOptions o = run_options(kind, kw, run_keywords(kind), cli::apply_init_file);
         o.out = out;
         py::gil_scoped_release unlocked;  // the run touches no Python object
         return cli::run_command(o, nullptr, true);

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "hypergas/edmd/given_state.hpp"
 #include "hypergas/observer.hpp"
 #include "hypergas/options/run_options.hpp"
 
@@ -119,8 +120,10 @@ struct GivenVelocities {
 /// set. Throws InvalidInput for parameters the engine rejects.
 std::unique_ptr<DsmcHandle> make_dsmc(const options::RunOptions& o,
                                       const GivenVelocities* given = nullptr);
-/// The same for the EDMD engine (engine edmd).
-std::unique_ptr<EdmdHandle> make_edmd(const options::RunOptions& o);
+/// The same for the EDMD engine (engine edmd); from a `given` state (positions in a periodic
+/// cube, velocities: hypergas/edmd/given_state.hpp) instead of the lattice when set.
+std::unique_ptr<EdmdHandle> make_edmd(const options::RunOptions& o,
+                                      const edmd::GivenState* given = nullptr);
 
 namespace detail {
 // Defined in handles.hpp, instantiated once per dimension (handles_dim.cpp.in).
@@ -128,7 +131,8 @@ template <int D>
 std::unique_ptr<DsmcHandle> make_dsmc_dim(const options::RunOptions& o, const dsmc::Config& cfg,
                                           const GivenVelocities* given);
 template <int D>
-std::unique_ptr<EdmdHandle> make_edmd_dim(const options::RunOptions& o, const edmd::Config& cfg);
+std::unique_ptr<EdmdHandle> make_edmd_dim(const options::RunOptions& o, const edmd::Config& cfg,
+                                          const edmd::GivenState* given);
 }  // namespace detail
 
 }  // namespace hypergas::python

@@ -15,10 +15,12 @@ std::unique_ptr<DsmcHandle> make_dsmc(const options::RunOptions& o,
                  [&](auto dim) { return detail::make_dsmc_dim<decltype(dim)::value>(o, cfg, given); });
 }
 
-std::unique_ptr<EdmdHandle> make_edmd(const options::RunOptions& o) {
+std::unique_ptr<EdmdHandle> make_edmd(const options::RunOptions& o,
+                                      const edmd::GivenState* given) {
   const edmd::Config cfg = options::edmd_config(o);
-  return for_dim(o.dim,
-                 [&](auto dim) { return detail::make_edmd_dim<decltype(dim)::value>(o, cfg); });
+  return for_dim(o.dim, [&](auto dim) {
+    return detail::make_edmd_dim<decltype(dim)::value>(o, cfg, given);
+  });
 }
 
 }  // namespace hypergas::python

@@ -177,12 +177,15 @@ std::unique_ptr<DsmcHandle> make_dsmc_dim(const options::RunOptions& o, const ds
 }
 
 template <int D>
-std::unique_ptr<EdmdHandle> make_edmd_dim(const options::RunOptions& o, const edmd::Config& cfg) {
+std::unique_ptr<EdmdHandle> make_edmd_dim(const options::RunOptions& o, const edmd::Config& cfg,
+                                          const edmd::GivenState* given) {
   return registry::with_engine<D>(
       options::engine_choice(o), [&](auto engine) -> std::unique_ptr<EdmdHandle> {
         using Engine = typename decltype(engine)::type;
-        if constexpr (!registry::is_dsmc<Engine>)
+        if constexpr (!registry::is_dsmc<Engine>) {
+          if (given) return std::make_unique<Edmd<Engine>>(cfg, *given);
           return std::make_unique<Edmd<Engine>>(cfg);
+        }
         else
           throw InvalidInput("python: a DSMC choice reached the EDMD factory");
       });

@@ -54,7 +54,8 @@ std::vector<std::string> engine_keywords(registry::EngineKind kind, bool given_v
 }
 
 options::RunOptions run_options(registry::EngineKind kind, const py::kwargs& kw,
-                                const std::vector<std::string>& allowed) {
+                                const std::vector<std::string>& allowed,
+                                const std::function<void(options::RunOptions&)>& adjust) {
   return options::make(kind, [&](options::RunOptions& o) {
     for (const auto& [key, value] : kw) {
       const std::string k = py::str(key);
@@ -63,6 +64,7 @@ options::RunOptions run_options(registry::EngineKind kind, const py::kwargs& kw,
       if (value.is_none()) continue;  // not given: the default
       set_value(o, *options::find(k), value);
     }
+    if (adjust) adjust(o);
   });
 }
 

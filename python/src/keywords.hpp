@@ -3,6 +3,8 @@
 // the table's typed setters, and the table and the sampling schedule as Python sees them.
 #pragma once
 
+#include <functional>
+
 #include <pybind11/pybind11.h>
 
 #include <string>
@@ -23,8 +25,10 @@ std::vector<std::string> engine_keywords(registry::EngineKind kind, bool given_v
 /// each keyword through the table (a value of the wrong type raises TypeError, a bad value
 /// ValueError with the command's message in Python spelling), then options::validate.
 /// Keywords not in `allowed` raise TypeError (as Python does); None means "not given".
+/// `adjust` runs after the keywords, before validation (the command's --init-file).
 options::RunOptions run_options(registry::EngineKind kind, const py::kwargs& kw,
-                                const std::vector<std::string>& allowed);
+                                const std::vector<std::string>& allowed,
+                                const std::function<void(options::RunOptions&)>& adjust = {});
 
 /// Binds option_table(), check_option(engine, name, value), given_velocity_keywords() and
 /// the class Schedule (hypergas/schedule.hpp).

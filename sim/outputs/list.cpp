@@ -14,10 +14,13 @@ namespace hypergas::cli {
 
 namespace outputs {
 extern const OutputKind vacf, pressure, transport, helfand, structure, histograms;
+#ifdef HYPERGAS_H5MD
+extern const OutputKind trajectory;
+#endif
 }
 
 namespace {
-const std::array<const OutputKind*, 7> kinds = {
+const auto kinds = std::to_array<const OutputKind*>({
     &outputs::moments,    // moments.csv, speed_histogram.csv
     &outputs::vacf,       // vacf.csv (EDMD)
     &outputs::pressure,   // Z_error, collision_rate_error (elastic EDMD)
@@ -25,7 +28,10 @@ const std::array<const OutputKind*, 7> kinds = {
     &outputs::helfand,    // transport.csv, correlations.csv (EDMD --transport)
     &outputs::structure,  // rdf.csv, structure_factor.csv (EDMD --structure)
     &outputs::histograms, // speed_histograms.csv (--histogram-every)
-};
+#ifdef HYPERGAS_H5MD
+    &outputs::trajectory, // trajectory.h5 (--trajectory-every)
+#endif
+});
 }  // namespace
 
 std::vector<std::unique_ptr<Output>> make_outputs(const RunSetup& setup) {

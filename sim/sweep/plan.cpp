@@ -11,6 +11,7 @@
 
 #include "hypergas/error.hpp"
 #include "hypergas/options/from_given.hpp"
+#include "../init_file.hpp"
 #include "hypergas/options/suggest.hpp"
 #include "hypergas/studies/replicas.hpp"
 #include "../outputs/output.hpp"
@@ -295,6 +296,7 @@ std::vector<Case> make_cases(const Plan& plan, const std::filesystem::path& dir)
           if (!checkpoints_given && checkpointable(o))
             options::set_text(o, *options::find("checkpoint-wall"), "60s");
           options::set_text(o, *options::find("out"), (dir / "cases" / c.id).string());
+          apply_init_file(o);  // a plan's init_file key: the file sets D, N (EDMD: packing)
         });
       } catch (const InvalidInput& e) {
         bad(fmt::format("case {} ({}): {}", c.id, c.label.empty() ? "the only case" : c.label,

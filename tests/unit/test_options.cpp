@@ -118,9 +118,10 @@ TEST_CASE("option table: each engine refuses the other's options", "[options]") 
     const RunOptions d = options::defaults(opt.engines == options::Engines::dsmc
                                                ? EngineKind::dsmc
                                                : EngineKind::edmd);
-    std::string text = options::value_text(d, opt);
-    if (opt.name == "start-packing") text = "0.05";
-    if (opt.name == "equilibration") text = "1";  // its default, 0, means "until / 5"
+    // equilibration: its default, 0, means "until / 5"
+    const std::string text = opt.name == "start-packing"   ? std::string("0.05")
+                             : opt.name == "equilibration" ? std::string("1")
+                                                           : options::value_text(d, opt);
     options::set_text(o, opt, text);
     INFO(options::cli_name(opt));
     CHECK(message_of([&] { options::validate(o); }).rfind(options::cli_name(opt) + " applies to", 0) == 0);

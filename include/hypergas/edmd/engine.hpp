@@ -75,6 +75,13 @@ class Engine {
   /// all events. Throws InvalidInput for bad parameters or a box below 2 diameters.
   explicit Engine(const Config& cfg);
 
+  /// Starts from a given state (given_state.hpp: positions in a periodic cube, velocities
+  /// as given) at time 0: checks it (finite, inside the box, no overlap) and predicts all
+  /// events. cfg.n and cfg.packing must be those of the state (the box sets the packing);
+  /// cfg.init, start_packing and the lattice are not used. Throws InvalidInput naming the
+  /// first problem.
+  Engine(const Config& cfg, const GivenState& g);
+
   /// Restores an engine saved by io() (hypergas/checkpoint.hpp): the same state, the same
   /// event calendar, so that it continues bit for bit as the saved one would have. Throws
   /// InvalidInput if the file holds another engine, dimension or feature set.
@@ -282,6 +289,8 @@ class Engine {
     else return 0.0;
   }
 
+  /// After the particles are placed (setup or setup_given): calendar, compression, clock.
+  void begin();
   /// Brings every particle into the box, rebuilds the cells for the current diameters and
   /// predicts every event.
   void rebuild();
@@ -374,17 +383,31 @@ class Engine {
 template <int D, Features F, class Scan>
 Engine<D, F, Scan>::Engine(const Config& cfg) : debug_(cfg.debug_overlap), cfg_(cfg) {
   s_.setup(cfg);
-  const std::size_t n = cfg.n;
-  reorder_every_ = cfg.reorder_interval > 0.0
-                       ? static_cast<std::uint64_t>(cfg.reorder_interval * 0.5 * n) + 1
+  begin();
+}
+
+template <int D, Features F, class Scan>
+Engine<D, F, Scan>::Engine(const Config& cfg, const GivenState& g)
+    : debug_(cfg.debug_overlap), cfg_(cfg) {
+  check_given_state<D>(g);
+  if (g.n != cfg.n) throw InvalidInput("EDMD start: the state's N differs from the config's");
+  s_.setup_given(cfg, g);  // diameter scale 1: no compression
+  begin();
+}
+
+template <int D, Features F, class Scan>
+void Engine<D, F, Scan>::begin() {
+  const std::size_t n = cfg_.n;
+  reorder_every_ = cfg_.reorder_interval > 0.0
+                       ? static_cast<std::uint64_t>(cfg_.reorder_interval * 0.5 * n) + 1
                        : ~std::uint64_t{0};
   rebuild();
   if (s_.scale_ref < 1.0) {
-    compress(*this, 1.0, cfg);  // elastic: alpha_ is 1 until set below
+    compress(*this, 1.0, cfg_);  // elastic: alpha_ is 1 until set below
     restart_clock();  // the compression is preparation: the run starts at t = 0
   }
-  tc_ = cfg.tc_time;
-  set_restitution(cfg.restitution);
+  tc_ = cfg_.tc_time;
+  set_restitution(cfg_.restitution);
   reset_observables();
 }
 

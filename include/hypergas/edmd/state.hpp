@@ -21,6 +21,7 @@
 #include "hypergas/edmd/cells.hpp"
 #include "hypergas/edmd/config.hpp"
 #include "hypergas/edmd/events.hpp"
+#include "hypergas/edmd/given_state.hpp"
 #include "hypergas/edmd/lattice.hpp"
 #include "hypergas/edmd/pair_time.hpp"
 #include "hypergas/edmd/restitution.hpp"
@@ -77,12 +78,7 @@ struct State {
     Rng lrng = rng.split(2);
     const LatticeSites<D> sites = lattice_sites<D>(n, L, lrng);
     for (std::size_t i = 0; i < n; ++i) p.position(i) = sites.x[i];
-    image.assign(n * D, 0);
-    cnt.assign(n, 0);
-    ev.assign(n, Ev{});
-    id.resize(n);
-    slot.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) id[i] = slot[i] = i;
+    fresh_bookkeeping(n);
     // Lattice gaps below 10% of a diameter make the occupied sites a near-contact network
     // (in 5D, 26% of the D_5 sites give ~10 touching neighbours each) whose collision rate
     // diverges under compression: N = 1000, eta = 0.14 did 3e6 collisions by t = 2e-8.
@@ -95,6 +91,41 @@ struct State {
         throw InvalidInput("start packing must be in (0, packing]");
       scale_ref = std::min(scale_ref, std::pow(cfg.start_packing / cfg.packing, 1.0 / D));
     }
+  }
+
+  /// Takes the positions, velocities and box of a given state (given_state.hpp, checked
+  /// there) at time 0 with no events; diameter scale 1 (no compression). Species where the
+  /// engine has two: species 1 has mass cfg.initial.mass_ratio.
+  void setup_given(const Config& cfg, const GivenState& g) {
+    check_restitution(cfg.restitution);
+    check_tc_time(cfg.tc_time);
+    const std::size_t n = g.n;
+    p.resize(n);
+    if constexpr (F.species) {
+      p.set_species_mass(0, 1.0);
+      p.set_species_mass(1, cfg.initial.mass_ratio);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int a = 0; a < D; ++a) {
+        p.position(i)[a] = g.positions[i * D + std::size_t(a)];
+        p.velocity(i)[a] = g.velocities[i * D + std::size_t(a)];
+      }
+      if constexpr (F.species) p.set_species(i, g.species ? g.species[i] : 0);
+    }
+    L = g.box;
+    max_base = 1.0;
+    fresh_bookkeeping(n);
+    scale_ref = 1.0;
+  }
+
+  /// No images, collisions or events yet; slots in the original numbering.
+  void fresh_bookkeeping(std::size_t n) {
+    image.assign(n * D, 0);
+    cnt.assign(n, 0);
+    ev.assign(n, Ev{});
+    id.resize(n);
+    slot.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) id[i] = slot[i] = i;
   }
 
   /// Saves or restores the whole state (hypergas/checkpoint.hpp).

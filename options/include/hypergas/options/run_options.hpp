@@ -40,6 +40,9 @@ struct RunOptions {
   double until = 0.0;          ///< end time
   double every = 0.0;          ///< requested sampling interval (0: not given; Schedule)
   double histogram_every = 0.0;  ///< speed histograms this far apart (0: the final one only)
+  double trajectory_every = 0.0;  ///< H5MD frames this far apart (0: no trajectory.h5)
+  std::string init_file;       ///< start from this H5MD file's state ("": a generated start)
+  long long init_frame = -1;   ///< the frame of init_file (negative: from the end)
   double equilibration = 0.0;  ///< EDMD: time before sampling starts (0: until / 5)
   double packing = 0.0;        ///< EDMD packing fraction eta
   double start_packing = 0.0;  ///< EDMD lattice start packing, compressed to eta (0: eta)

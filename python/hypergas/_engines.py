@@ -2,6 +2,7 @@
 
 import inspect
 import math
+import os
 
 import numpy as np
 
@@ -19,7 +20,8 @@ class _Engine:
         self._observed_at = None  # engine time of the last observation (none twice)
 
     # ---- running ------------------------------------------------------------------
-    def run(self, until, every=None, callback=None, observers=(), progress=False):
+    def run(self, until, every=None, callback=None, observers=(), progress=False,
+            trajectory=None):
         """Advances the gas to time ``until`` and returns the engine.
 
         With ``observers`` (MomentsRecorder, VacfRecorder, TransportRecorder, HelfandRecorder,
@@ -36,6 +38,8 @@ class _Engine:
         about 0.1 s (DSMC: at the end of the current epoch of ~2N candidates) and leaves
         the engine consistent at the time it reached; ``run`` can then go on from there.
         ``progress=True`` shows a progress bar (tqdm if installed, else a line on stderr).
+        ``trajectory=PATH`` writes an H5MD file (docs/h5md.md; replaced if present) with a
+        frame at each of these instants, as ``hypergas run --trajectory-every`` does.
         """
         until = _time_argument("until", until)
         t0 = self.time
@@ -52,6 +56,16 @@ class _Engine:
                                 f"got {type(o).__name__}")
         if callback is not None and not callable(callback):
             raise TypeError(f"callback must be callable, got {type(callback).__name__}")
+        writer = None
+        if trajectory is not None:
+            if not hasattr(_hypergas, "TrajectoryRecorder"):
+                raise RuntimeError("trajectory= needs a hypergas built with HDF5 (libhdf5-dev)")
+            lanes = self._kind == "dsmc" and getattr(self, "scheme", "exact") == "lanes"
+            writer = _hypergas.TrajectoryRecorder(
+                os.fspath(trajectory), ids=not lanes,
+                parameters=[("engine", self._kind), ("dim", str(self.dim)),
+                            ("n", str(self.n)), ("seed", str(getattr(self, "seed", "")))])
+            observers = observers + (writer,)
         sampling = bool(observers) or callback is not None
         if every is not None:
             every = _time_argument("every", every)
@@ -70,10 +84,14 @@ class _Engine:
                         if callback is not None:
                             callback(self)
                         self._observed_at = self.time
+                    elif writer is not None and writer.frames == 0:
+                        self._h.observe(writer)  # the file starts at the call's instant
             self._h.advance(until, bar)
         finally:
             if bar is not None:
                 bar.close(self.time)
+            if writer is not None and writer.frames > 0:
+                writer.close()
         return self
 
     def observe(self, *observers):

@@ -12,6 +12,9 @@
 #include <memory>
 #include <string>
 
+#ifdef HYPERGAS_H5MD
+#include "trajectory_observer.hpp"
+#endif
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "convert.hpp"
@@ -187,6 +190,20 @@ void bind_observers(py::module_& m) {
            py::arg("path"))
       .def("write_correlations_csv", &analysis::TransportRecorder::write_correlations_csv,
            py::arg("path"));
+
+#ifdef HYPERGAS_H5MD
+  // engine.run(..., trajectory=PATH): H5MD frames at the run's sampling instants
+  py::class_<cli::TrajectoryObserver, Observer>(m, "TrajectoryRecorder")
+      .def(py::init([](const std::string& path, bool ids,
+                       const std::vector<std::pair<std::string, std::string>>& params) {
+             if (path.empty()) throw InvalidInput("trajectory: the path is empty");
+             return std::make_unique<cli::TrajectoryObserver>(path, 1, ids, params);
+           }),
+           py::arg("path"), py::arg("ids") = true,
+           py::arg("parameters") = std::vector<std::pair<std::string, std::string>>{})
+      .def("close", [](cli::TrajectoryObserver& t) { return t.close().string(); })
+      .def_property_readonly("frames", &cli::TrajectoryObserver::frames);
+#endif
 
   py::class_<analysis::HelfandRecorder, Observer>(m, "HelfandRecorder")
       .def(py::init([](const py::object& dim, const py::object& n, double start, double end,

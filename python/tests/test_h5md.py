@@ -293,3 +293,24 @@ def test_example_12_runs_as_written(tmp_path, cli):
                        cwd=tmp_path, check=True, capture_output=True, text=True, env=env)
     assert "saved: 21 frames of 5000 spheres in D = 4" in r.stdout
     assert "runs from frames 1..20" in r.stdout
+
+
+def test_engine_run_writes_a_trajectory(tmp_path):
+    """engine.run(until, every, trajectory=PATH): a frame at each sampling instant."""
+    import hypergas as hg
+    md = hg.EDMD(dim=3, n=108, packing=0.2, seed=3)
+    md.run(1.0)
+    path = tmp_path / "md.h5"
+    md.run(3.0, every=0.5, trajectory=path)
+    t = hg.read_trajectory(path)
+    assert list(t.time) == [1.0, 1.5, 2.0, 2.5, 3.0] and t.n == 108 and t.dim == 3
+    order = np.argsort(md.ids)  # rows in memory order; the file is in particle order
+    assert np.array_equal(t.velocities[-1], md.velocities[order])
+    d = t.positions[-1] - md.positions[order]
+    d -= t.box[-1] * np.round(d / t.box[-1])
+    assert np.abs(d).max() < 1e-12
+    g = hg.DSMC(dim=4, n=500, init="beams", seed=2)
+    g.run(2.0, every=1.0, trajectory=tmp_path / "g.h5")
+    t = hg.read_trajectory(tmp_path / "g.h5")
+    assert len(t) == 3 and t.positions is None
+    assert np.array_equal(t.velocities[-1], g.velocities)

@@ -16,6 +16,29 @@
 
 namespace hypergas::cli {
 
+#ifdef HYPERGAS_H5MD
+InitSpecies init_species(const std::vector<double>& mass, const std::vector<std::int32_t>& species,
+                         const std::string& file) {
+  InitSpecies out;
+  for (double m : mass) {
+    if (m == 1.0) continue;
+    if (out.mass_ratio != 1.0 && m != out.mass_ratio)
+      throw InvalidInput(fmt::format("{} holds more than two masses: --init-file reads mass 1 "
+                                     "(species 0) and at most one other (species 1)",
+                                     file));
+    out.mass_ratio = m;
+    ++out.heavy;
+  }
+  if (mass.empty())
+    for (std::int32_t k : species)
+      if (k != 0)
+        throw InvalidInput(fmt::format("{} holds species but no masses: give each particle's "
+                                       "mass (/particles/all/mass)",
+                                       file));
+  return out;
+}
+#endif
+
 void apply_init_file(options::RunOptions& o) {
 #ifndef HYPERGAS_H5MD
   if (o.trajectory_every > 0.0)
@@ -47,16 +70,13 @@ void apply_init_file(options::RunOptions& o) {
                                    o.n, s.n, f));
   o.dim = s.dim;
   o.n = static_cast<long long>(s.n);
-  for (double m : s.mass)
-    if (m != 1.0)
-      throw InvalidInput(fmt::format("{} holds masses other than 1: --init-file reads one "
-                                     "species of unit mass",
-                                     f));
-  for (int sp : s.species)
-    if (sp != 0)
-      throw InvalidInput(fmt::format("{} holds species other than 0: --init-file reads one "
-                                     "species of unit mass",
-                                     f));
+  // The masses decide the species: mass 1 is species 0 (the unit of mass), one other mass
+  // is species 1 (--mass-ratio, --fraction from the file)
+  const InitSpecies sp = init_species(s.mass, s.species, f);
+  if (sp.mass_ratio != 1.0) {
+    o.mass_ratio = sp.mass_ratio;
+    o.fraction = static_cast<double>(sp.heavy) / static_cast<double>(s.n);
+  }
   if (o.engine_kind() != registry::EngineKind::edmd) return;
   if (s.positions.empty())
     throw InvalidInput(fmt::format("{} holds no positions (a velocity-space state): an EDMD "

@@ -314,3 +314,33 @@ def test_engine_run_writes_a_trajectory(tmp_path):
     t = hg.read_trajectory(tmp_path / "g.h5")
     assert len(t) == 3 and t.positions is None
     assert np.array_equal(t.velocities[-1], g.velocities)
+
+
+def test_two_masses_from_a_file(tmp_path, cli):
+    """Mass 1 is species 0, the other mass species 1: the run's mass ratio and fraction."""
+    rng = np.random.default_rng(11)
+    x = cubic_lattice(4, 2.5)  # 64 spheres in a box of 10
+    n = len(x)
+    m = np.where(np.arange(n) % 4 == 0, 3.0, 1.0)  # 16 of mass 3
+    v = rng.normal(size=(n, 3))
+    v -= (m[:, None] * v).sum(0) / m.sum()  # zero total momentum
+    path = tmp_path / "two.h5"
+
+    def masses(f):
+        f["particles/all/mass"] = m
+        f["particles/all/species"] = (m != 1).astype(np.int32)
+
+    write_state(path, x=x, v=v, box=10.0, extra=masses)
+    for engine in ("dsmc", "edmd"):
+        s = run(cli, tmp_path / engine, "--engine", engine, "--init-file", path, "--until", 1,
+                "--trajectory-every", 1)
+        assert s["mass_ratio"] == 3.0 and s["fraction"] == 0.25, engine
+        with h5py.File(tmp_path / engine / "trajectory.h5", "r") as f:
+            assert np.array_equal(f["particles/all/mass"][:], m), engine
+            assert np.array_equal(f["particles/all/species"][:], (m != 1).astype(np.int32))
+    three = tmp_path / "three.h5"
+    write_state(three, v=v, extra=lambda f: f["particles/all"].create_dataset(
+        "mass", data=np.where(np.arange(n) % 2 == 0, 2.0, np.where(np.arange(n) % 3, 1.0, 5.0))))
+    r = subprocess.run([cli, "run", "--init-file", str(three), "--out", str(tmp_path / "o")],
+                       capture_output=True, text=True)
+    assert r.returncode == 2 and "more than two masses" in r.stderr

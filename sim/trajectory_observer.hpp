@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "hypergas/analysis/moments.hpp"
 #include "hypergas/checkpoint.hpp"
 #include "hypergas/error.hpp"
 #include "hypergas/h5md/h5md.hpp"
@@ -42,17 +43,8 @@ class TrajectoryObserver final : public Observer {
     const std::size_t n = s.n, D = std::size_t(s.dim), st = std::size_t(s.stride);
     const double scale = std::exp(s.log_velocity_scale);
     vel_.resize(n * D);
-    double e2 = 0.0, e4 = 0.0, ke = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      double v2 = 0.0;
-      for (std::size_t a = 0; a < D; ++a) {
-        const double v = s.velocities[i * st + a] * scale;
-        vel_[i * D + a] = v;
-        v2 += v * v;
-      }
-      e2 += v2, e4 += v2 * v2;
-      ke += v2 / s.inverse_mass(i);
-    }
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t a = 0; a < D; ++a) vel_[i * D + a] = s.velocities[i * st + a] * scale;
     h5md::FrameData f;
     f.step = static_cast<std::int64_t>(index);
     f.time = std::isfinite(s.real_time) ? s.real_time : s.time;
@@ -75,9 +67,12 @@ class TrajectoryObserver final : public Observer {
       f.images = img_.data();
       f.box = L;
     }
-    const double N = static_cast<double>(n), d = static_cast<double>(s.dim);
-    const double obs[3] = {ke / (d * N), d / (d + 2.0) * N * e4 / (e2 * e2) - 1.0,
-                           2.0 * static_cast<double>(s.collisions) / N};
+    // the moments of moments.csv (the stored velocities: kT scales with their scale^2)
+    const analysis::Moments m = analysis::compute_moments(s);
+    const double d = static_cast<double>(s.dim);
+    const double obs[3] = {m.kT * scale * scale,
+                           d / (d + 2.0) * m.m4.value / (m.m2.value * m.m2.value) - 1.0,
+                           2.0 * static_cast<double>(s.collisions) / static_cast<double>(n)};
     f.observables = obs;
     writer_->append(f);
   }

@@ -145,7 +145,6 @@ Id growing_dataset(hid_t parent, const char* name, hid_t type, const std::vector
   if (tail.empty()) chunk[0] = 1024;  // scalars per frame: 1024 frames a chunk
   // a frame [n, D] is cut along n into chunks of at most 2^17 doubles (1 MiB)
   if (tail.size() == 2) chunk[1] = std::max<hsize_t>(1, std::min<hsize_t>(tail[0], (1u << 17) / tail[1]));
-  if (tail.size() == 1) chunk[0] = std::max<hsize_t>(1, (1u << 12) / std::max<hsize_t>(1, tail[0]));
   const Id space = checked(H5Screate_simple(rank, dims.data(), max.data()), H5Sclose,
                            "h5md: dataspace");
   const Id dcpl = checked(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "h5md: property list");
@@ -398,12 +397,16 @@ struct Reader {
     return true;
   }
 
-  /// Reads `count` rows from `first` of dataset `name` (rank >= 1) as doubles or ints.
+  Id dataset(hid_t parent, const std::string& name) const {
+    return checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), H5Dclose,
+                   path + ": cannot open " + name);
+  }
+
+  /// Reads `count` rows from `first` of the open dataset d (rank >= 1, called `name` in
+  /// messages) as doubles or ints.
   template <class T>
-  std::vector<T> rows(hid_t parent, const std::string& name, hsize_t first, hsize_t count,
+  std::vector<T> rows(const Id& d, const std::string& name, hsize_t first, hsize_t count,
                       hid_t mem) const {
-    const Id d = checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), H5Dclose,
-                         path + ": cannot open " + name);
     const std::vector<hsize_t> dims = shape(d.get());
     if (dims.empty()) bad(name + " is a scalar, expected an array");
     std::vector<hsize_t> start(dims.size(), 0), cnt = dims;
@@ -479,32 +482,31 @@ std::vector<double> element(const Reader& r, hid_t parent, const std::string& na
     const Id g = checked(H5Gopen2(parent, name.c_str(), H5P_DEFAULT), H5Gclose,
                          r.path + ": cannot open " + name);
     if (!r.exists(g.get(), "value")) r.bad(name + " has no value dataset");
-    const Id d = checked(H5Dopen2(g.get(), "value", H5P_DEFAULT), H5Dclose,
-                         r.path + ": cannot open " + name + "/value");
-    const std::uint64_t F = r.shape(d.get()).empty() ? 0 : r.shape(d.get())[0];
+    const Id d = r.dataset(g.get(), "value");
+    const std::vector<hsize_t> dims = r.shape(d.get());
+    const std::uint64_t F = dims.empty() ? 0 : dims[0];
     if (frames) *frames = F;
     const std::int64_t idx = k < 0 ? static_cast<std::int64_t>(F) + k : k;
     if (F == 0 || idx < 0 || static_cast<std::uint64_t>(idx) >= F)
       r.bad("frame " + std::to_string(k) + " does not exist: " + name + " has " +
             std::to_string(F) + " frame(s)");
     if (time && r.exists(g.get(), "time"))
-      *time = r.rows<double>(g.get(), "time", hsize_t(idx), 1, H5T_NATIVE_DOUBLE).at(0);
+      *time = r.rows<double>(r.dataset(g.get(), "time"), name + "/time", hsize_t(idx), 1,
+                             H5T_NATIVE_DOUBLE).at(0);
     if (step && r.exists(g.get(), "step"))
-      *step = r.rows<std::int64_t>(g.get(), "step", hsize_t(idx), 1, H5T_NATIVE_INT64).at(0);
-    return r.rows<double>(g.get(), "value", hsize_t(idx), 1, H5T_NATIVE_DOUBLE);
+      *step = r.rows<std::int64_t>(r.dataset(g.get(), "step"), name + "/step", hsize_t(idx), 1,
+                                   H5T_NATIVE_INT64).at(0);
+    return r.rows<double>(d, name + "/value", hsize_t(idx), 1, H5T_NATIVE_DOUBLE);
   }
-  const Id d = checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), H5Dclose,
-                       r.path + ": cannot open " + name);
+  const Id d = r.dataset(parent, name);
   const auto dims = r.shape(d.get());
-  return r.rows<double>(parent, name, 0, dims.empty() ? 1 : dims[0], H5T_NATIVE_DOUBLE);
+  return r.rows<double>(d, name, 0, dims.empty() ? 1 : dims[0], H5T_NATIVE_DOUBLE);
 }
 
 std::vector<hsize_t> value_shape(const Reader& r, hid_t parent, const std::string& name) {
-  const std::string v = r.is_group(parent, name) ? name + "/value" : name;
-  const Id d = checked(H5Dopen2(parent, v.c_str(), H5P_DEFAULT), H5Dclose,
-                       r.path + ": cannot open " + v);
-  auto s = r.shape(d.get());
-  if (r.is_group(parent, name) && !s.empty()) s.erase(s.begin());
+  const bool per_frame = r.is_group(parent, name);
+  auto s = r.shape(r.dataset(parent, per_frame ? name + "/value" : name).get());
+  if (per_frame && !s.empty()) s.erase(s.begin());
   return s;
 }
 
@@ -711,11 +713,11 @@ std::vector<std::pair<double, double>> read_observable(const std::string& path,
   const std::string g = "observables/" + name;
   if (!r.exists(r.file.get(), "observables") || !r.exists(r.file.get(), g)) return out;
   const Id grp = checked(H5Gopen2(r.file.get(), g.c_str(), H5P_DEFAULT), H5Gclose, path);
-  const Id d = checked(H5Dopen2(grp.get(), "value", H5P_DEFAULT), H5Dclose, path);
+  const Id d = r.dataset(grp.get(), "value");
   const hsize_t F = r.shape(d.get()).at(0);
   if (F == 0) return out;
-  const auto t = r.rows<double>(grp.get(), "time", 0, F, H5T_NATIVE_DOUBLE);
-  const auto v = r.rows<double>(grp.get(), "value", 0, F, H5T_NATIVE_DOUBLE);
+  const auto t = r.rows<double>(r.dataset(grp.get(), "time"), g + "/time", 0, F, H5T_NATIVE_DOUBLE);
+  const auto v = r.rows<double>(d, g + "/value", 0, F, H5T_NATIVE_DOUBLE);
   for (hsize_t k = 0; k < F; ++k) out.emplace_back(t[k], v[k]);
   return out;
 }

@@ -54,8 +54,7 @@ class Series final : public Observer {
 class HistogramsOutput final : public Output {
  public:
   explicit HistogramsOutput(const RunSetup& s)
-      : series_(static_cast<std::uint64_t>(std::max(
-            1.0, std::round(s.options.histogram_every / s.plan.sampling.every())))) {}
+      : series_(sampling_stride(s.plan, s.options.histogram_every)) {}
 
   Observer* sampler() override { return &series_; }
   void save(checkpoint::Writer& w) const override { w(series_); }

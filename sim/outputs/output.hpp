@@ -12,6 +12,9 @@
 // one line in list.cpp, and (if it plots) scripts/run/<name>.gp.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -71,6 +74,12 @@ struct OutputKind {
   /// only when every output it has can be.
   bool checkpointable = true;
 };
+
+/// An output that takes every m-th sampling instant from the first, about `interval` apart:
+/// m = max(1, round(interval / sampling interval)) (--histogram-every, --trajectory-every).
+inline std::uint64_t sampling_stride(const RunPlan& plan, double interval) {
+  return static_cast<std::uint64_t>(std::max(1.0, std::round(interval / plan.sampling.every())));
+}
 
 /// OutputKind::make of an output class T constructed from the RunSetup.
 template <class T>

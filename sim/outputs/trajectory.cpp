@@ -31,8 +31,7 @@ namespace {
 class TrajectoryOutput final : public Output {
  public:
   explicit TrajectoryOutput(const RunSetup& s)
-      : stride_(static_cast<std::uint64_t>(
-            std::max(1.0, std::round(s.options.trajectory_every / s.plan.sampling.every())))),
+      : stride_(sampling_stride(s.plan, s.options.trajectory_every)),
         every_(static_cast<double>(stride_) * s.plan.sampling.every()),
         traj_(fs::path(s.options.out) / OutputDir::trajectory_partial, stride_,
               !(s.engine == registry::EngineKind::dsmc &&

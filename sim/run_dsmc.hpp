@@ -104,8 +104,12 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
     f.collisions_per_s += rate[r];
   }
   f.wall_s = wall;
-  // a granular gas loses its energy: no drift to report
-  f.energy_rel_drift = o.restitution != 1.0 ? std::numeric_limits<double>::quiet_NaN()
+  // a granular gas loses its energy, one sheared without thermostat gains it: no drift to
+  // report (the isokinetic thermostat holds it: its drift is reported)
+  const bool energy_held =
+      o.restitution == 1.0 &&
+      (o.shear_rate == 0.0 || options::thermostat_kind(o.thermostat) == dsmc::Thermostat::isokinetic);
+  f.energy_rel_drift = !energy_held ? std::numeric_limits<double>::quiet_NaN()
                                             : *std::max_element(drift_e.begin(), drift_e.end());
   f.momentum_drift = *std::max_element(drift_p.begin(), drift_p.end());
   f.time = until;

@@ -30,6 +30,7 @@ void check_engine(std::string_view v) { (void)registry::engine(v); }
 void check_model(std::string_view v) { (void)registry::model(v); }
 void check_init(std::string_view v) { (void)registry::initial_state(v); }
 void check_drive(std::string_view v) { (void)drive_kind(v); }
+void check_thermostat(std::string_view v) { (void)thermostat_kind(v); }
 void check_scheme(std::string_view v) { (void)registry::scheme(v); }
 std::string schemes_help() { return registry::describe(registry::schemes); }
 void check_duration(std::string_view v) { (void)parse_duration("--checkpoint-wall", std::string(v)); }
@@ -72,6 +73,8 @@ const Option table[] = {
   {"epoch", 0, E::dsmc, U::engine, &R::epoch, {pos_open, 1e308, true, false, "a finite time > 0"}, nullptr, nullptr, "mean collision times", "with --scheme lanes: time between two deals of the particles into lanes", "", false, false},
   {"drive", 0, E::dsmc, U::engine, &R::drive, {}, check_drive, nullptr, "", "energy input of a granular gas: none (the homogeneous cooling state) or white-noise (random kicks that hold the first-Sonine temperature at --temperature; hard spheres, --restitution < 1)", "", false, false},
   {"drive-dt", 0, E::dsmc, U::engine, &R::drive_dt, {pos_open, 1, true, false, "a finite interval > 0 and at most 1"}, nullptr, nullptr, "mean collision times", "with --drive white-noise: interval between the kicks", "", false, false},
+  {"shear-rate", 0, E::dsmc, U::engine, &R::shear_rate, {0, 100, false, false, "a finite rate in [0, 100]"}, nullptr, nullptr, "per mean collision time at the initial T", "uniform shear flow u_x = a y (D >= 2, --scheme exact): the gas is simulated in the frame that moves with the flow, where it is homogeneous and dV_x/dt = -a V_y between collisions, exactly; writes pressure_tensor.csv and the rheology summary keys (docs/validation.md, \"Uniform shear flow\"). 0: no flow", "", false, false},
+  {"thermostat", 0, E::dsmc, U::engine, &R::thermostat, {}, check_thermostat, nullptr, "", "with --shear-rate: none (viscous heating; the gas is kept in scaled velocities and moments.csv gives T and real_time, as for cooling) or isokinetic (the Gaussian thermostat -zeta V that holds T; elastic gases)", "", false, false},
   {"tc-time", 0, E::edmd, U::engine, &R::tc_time, {0, 1e308, false, false, "a finite time >= 0"}, nullptr, nullptr, "sigma sqrt(m/kT)", "with --restitution < 1: a collision within this time of either particle's previous one is elastic (the TC model of Luding and McNamara against inelastic collapse)", "", false, false},
   {"packing", 0, E::edmd, U::engine, &R::packing, {pos_open, 1, true, false, "a finite fraction > 0 and at most 1"}, nullptr, jamming_help, "", "packing fraction eta (volume of the spheres / box volume),", "", false, false},
   {"start-packing", 0, E::edmd, U::engine, &R::start_packing, {pos_open, 1, true, true, "> 0 and < 1"}, nullptr, nullptr, "", "start from the lattice at this packing, at most --packing, and compress (Lubachevsky-Stillinger) to --packing: a dense fluid or glass instead of a crystal", "start at --packing", false, false},
@@ -168,6 +171,8 @@ RunOptions defaults(registry::EngineKind e) {
   o.restitution = dsmc ? d.restitution : m.restitution;
   o.drive = std::string(drive_name(d.drive));
   o.drive_dt = d.drive_dt;
+  o.shear_rate = d.shear_rate;
+  o.thermostat = std::string(thermostat_name(d.thermostat));
   o.scheme = std::string(registry::name(d.scheme));
   o.dt = d.dt;
   o.lane_size = d.lane_size;

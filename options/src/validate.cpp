@@ -162,6 +162,35 @@ void validate_granular(const RunOptions& o) {
     reject("--structure measures the elastic fluid at equilibrium: leave out --restitution");
 }
 
+/// --shear-rate and --thermostat (dsmc/shear.hpp).
+void validate_shear(const RunOptions& o) {
+  if (o.engine_kind() != registry::EngineKind::dsmc) return;
+  const bool sheared = o.shear_rate != 0.0;
+  const bool iso = thermostat_kind(o.thermostat) == dsmc::Thermostat::isokinetic;
+  if (!sheared) {
+    if (iso)
+      reject("--thermostat isokinetic needs --shear-rate > 0 (a gas at rest keeps its "
+             "temperature)");
+    return;
+  }
+  if (o.dim < 2)
+    reject("--shear-rate needs --dim >= 2: the flow is along x and its gradient along y");
+  if (registry::scheme(o.scheme) != dsmc::Scheme::exact)
+    reject(fmt::format("--shear-rate runs on --scheme exact only, not --scheme {}: its candidates "
+                       "carry their own times in the flow",
+                       o.scheme));
+  if (drive_kind(o.drive) != dsmc::Drive::none)
+    reject("--shear-rate and --drive white-noise cannot be combined: the shear is the energy "
+           "input");
+  if (iso && o.restitution != 1.0)
+    reject("--thermostat isokinetic holds an elastic gas: a granular sheared gas reaches its "
+           "steady state, where viscous heating balances the collisional loss, without one; "
+           "leave it out");
+  if (o.transport)
+    reject("--transport measures the gas at equilibrium: leave out --shear-rate (the sheared "
+           "gas's viscosity is in the summary, viscosity_ratio)");
+}
+
 /// --scheme and the options of one scheme.
 void validate_scheme(const RunOptions& o) {
   if (o.engine_kind() != registry::EngineKind::dsmc) return;
@@ -260,6 +289,7 @@ void validate(const RunOptions& o) {
   validate_scheme(o);
   validate_transport(o);
   validate_granular(o);
+  validate_shear(o);
   validate_physics(o);
   if (!o.structure)
     for (const char* k : {"--rdf-max", "--k-max"})
@@ -308,6 +338,8 @@ dsmc::Config dsmc_config(const RunOptions& o) {
   cfg.restitution = o.restitution;
   cfg.drive = drive_kind(o.drive);
   cfg.drive_dt = o.drive_dt;
+  cfg.shear_rate = o.shear_rate;
+  cfg.thermostat = thermostat_kind(o.thermostat);
   cfg.scheme = registry::scheme(o.scheme);
   cfg.dt = o.dt;
   cfg.lane_size = static_cast<std::uint32_t>(o.lane_size);
@@ -345,6 +377,16 @@ dsmc::Drive drive_kind(std::string_view name) {
 
 std::string_view drive_name(dsmc::Drive d) {
   return d == dsmc::Drive::white_noise ? "white-noise" : "none";
+}
+
+dsmc::Thermostat thermostat_kind(std::string_view name) {
+  if (name == "none") return dsmc::Thermostat::none;
+  if (name == "isokinetic") return dsmc::Thermostat::isokinetic;
+  reject(fmt::format("unknown thermostat '{}': none or isokinetic", name));
+}
+
+std::string_view thermostat_name(dsmc::Thermostat t) {
+  return t == dsmc::Thermostat::isokinetic ? "isokinetic" : "none";
 }
 
 }  // namespace hypergas::options

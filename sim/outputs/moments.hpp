@@ -28,7 +28,7 @@ class MomentsOutput final : public Output {
   int dim_;
   bool dsmc_;
   double restitution_;
-  bool driven_, hard_spheres_;
+  bool driven_, hard_spheres_, sheared_;
 };
 
 namespace outputs {

@@ -269,6 +269,28 @@ TEST_CASE("run: granular options out of range or in the wrong combination are re
   expect_rejected({"run", "--restitution", "0.5", "--drive-dt", "0.1"},
                   "--drive-dt applies with --drive white-noise only");
   expect_rejected({"run", "--drive-dt", "0.1"}, "--drive-dt applies with --drive white-noise only");
+  // the shear flow (dsmc/shear.hpp): D >= 2, a finite rate in [0, 100], the exact scheme,
+  // a thermostat only with shear and only for an elastic gas, not with --transport or EDMD
+  expect_rejected({"run", "--shear-rate", "1", "--dim", "1", "--mass-ratio", "3"},
+                  "--shear-rate needs --dim >= 2");
+  for (const char* a : {"-1", "nan", "inf", "101", "x"})
+    expect_rejected({"run", "--shear-rate", a}, "--shear-rate");
+  expect_rejected({"run", "--thermostat", "isokinetic"},
+                  "--thermostat isokinetic needs --shear-rate > 0");
+  expect_rejected({"run", "--shear-rate", "1", "--thermostat", "nose"},
+                  "--thermostat: unknown thermostat 'nose'");
+  expect_rejected({"run", "--shear-rate", "1", "--scheme", "lanes"},
+                  "--shear-rate runs on --scheme exact only");
+  expect_rejected({"run", "--shear-rate", "1", "--scheme", "ntc"},
+                  "--shear-rate runs on --scheme exact only");
+  expect_rejected({"run", "--shear-rate", "1", "--thermostat", "isokinetic", "--restitution",
+                   "0.9"},
+                  "--thermostat isokinetic holds an elastic gas");
+  expect_rejected({"run", "--shear-rate", "1", "--restitution", "0.5", "--drive", "white-noise"},
+                  "--shear-rate and --drive white-noise cannot be combined");
+  expect_rejected({"run", "--shear-rate", "1", "--transport", "--until", "500"},
+                  "--transport measures the gas at equilibrium");
+  expect_rejected({"run", "--engine", "edmd", "--shear-rate", "1"}, "--shear-rate");
   expect_rejected({"run", "--restitution", "0.5", "--drive", "white-noise", "--drive-dt", "0"},
                   "--drive-dt must be a finite interval > 0 and at most 1");
   expect_rejected({"run", "--engine", "edmd", "--drive", "white-noise", "--restitution", "0.5"},

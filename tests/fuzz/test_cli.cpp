@@ -323,7 +323,8 @@ const std::set<std::string> run_names{
     "--vhs-exponent", "--init", "--until", "--every", "--packing", "--mass-ratio", "--fraction",
     "--temperature", "--seed", "--threads", "-j", "--replicas", "--checkpoint-every",
     "--checkpoint-wall", "--transport", "--correlation-dt", "--correlation-time", "--tagged",
-    "--restitution", "--drive", "--drive-dt", "--tc-time", "--help", "-h"};
+    "--restitution", "--drive", "--drive-dt", "--shear-rate", "--thermostat", "--tc-time",
+    "--help", "-h"};
 const std::set<std::string> bench_names{"--engine", "--dim", "-d", "--n", "-n", "--model",
                                         "--packing", "--reps", "--min-collisions", "--threads",
                                         "-j", "--seed", "--help", "-h"};
@@ -762,7 +763,7 @@ std::pair<Args, std::string> mutated(Rng& r, const Command& base, const Spec& sp
 const std::vector<std::string> run_numeric{
     "--dim", "--n", "--until", "--every", "--packing", "--mass-ratio", "--fraction",
     "--temperature", "--seed", "--threads", "--vhs-exponent", "--checkpoint-every",
-    "--restitution"};
+    "--restitution", "--shear-rate"};
 const std::vector<std::string> known_inits{"maxwell", "delta", "cube", "beams", "bimaxwell",
                                            "bkw", "two-temp"};
 
@@ -804,6 +805,10 @@ Command dsmc_run(Rng& r) {
       if (r.chance(0.5)) c.opts.push_back({"--drive-dt", fmt_double(0.01 + r.unit(), "%.3f")});
     }
   }
+  if (r.chance(0.12)) {  // a shear flow, with or without thermostat (D = 1 is refused)
+    c.opts.push_back({"--shear-rate", fmt_double(r.chance(0.1) ? 0.0 : 5 * r.unit(), "%.3f")});
+    if (r.chance(0.4)) c.opts.push_back({"--thermostat", r.chance(0.8) ? "isokinetic" : "none"});
+  }
   add_common_run_extras(r, c, until);
   return c;
 }
@@ -816,7 +821,7 @@ Spec dsmc_spec() {
            {"--init", "bkw"}, {"--every", "0.1"}, {"--threads", "2"}, {"--temperature", "2"},
            {"--checkpoint-every", "0.2"}, {"--checkpoint-wall", "1min"},
            {"--restitution", "0.5"}, {"--drive", "white-noise"}, {"--drive", "none"},
-           {"--drive-dt", "0.2"}}};
+           {"--drive-dt", "0.2"}, {"--shear-rate", "1.5"}, {"--thermostat", "isokinetic"}}};
 }
 
 Command edmd_run(Rng& r) {
@@ -844,7 +849,8 @@ Spec edmd_spec() {
   return {run_numeric,
           {{"--model", "maxwell"}, {"--model", "hs"}, {"--model", "vhs"}, {"--temperature", "2"},
            {"--temperature", "1"}, {"--threads", "2"}, {"--threads", "1"},
-           {"--vhs-exponent", "0.5"}, {"--drive", "white-noise"}, {"--drive-dt", "0.1"}},
+           {"--vhs-exponent", "0.5"}, {"--drive", "white-noise"}, {"--drive-dt", "0.1"},
+           {"--shear-rate", "1"}, {"--thermostat", "isokinetic"}},
           {{"--json", std::nullopt}, {"--seed", "3"}, {"--init", "delta"}, {"--every", "0.1"},
            {"--mass-ratio", "2"}, {"--fraction", "0.3"}, {"--checkpoint-every", "0.3"},
            {"--packing", "0.05"}, {"--restitution", "0.8"}, {"--tc-time", "0.001"}}};
@@ -1098,6 +1104,10 @@ class Area {
     const auto problems = check(c, o, dir, before);
     if (!problems.empty()) f.add(c, index, case_seed, o, problems);
     std::error_code ec;
+    // HYPERGAS_FUZZ_KEEP=DIR keeps each failing case's folder as DIR/<area>-c<index>
+    if (const char* keep = std::getenv("HYPERGAS_FUZZ_KEEP"); keep && *keep && !problems.empty())
+      fs::copy(dir, fs::path(keep) / (root().filename().string() + "-c" + std::to_string(index)),
+               fs::copy_options::recursive, ec);
     fs::remove_all(dir, ec);
   }
   long invocations() const { return invocations_; }

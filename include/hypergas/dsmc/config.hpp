@@ -22,6 +22,15 @@ enum class Scheme { exact, ntc, lanes };
 /// a white-noise force on every particle (a driven steady state; dsmc/granular.hpp).
 enum class Drive { none, white_noise };
 
+/// A sheared gas's thermostat (dsmc/shear.hpp): none (viscous heating: scaled velocities and
+/// real_time, as for cooling) or isokinetic (the Gaussian thermostat that holds T).
+enum class Thermostat { none, isokinetic };
+
+/// The largest shear rate accepted (per mean collision time at kT0): above it a mean
+/// collision time holds more than 100 strain units, and the engine's rebases (one per 0.1
+/// of strain, O(N) each) would outnumber the collisions a thousandfold.
+inline constexpr double max_shear_rate = 100.0;
+
 /// A DSMC run (the collision model is the engine's Model template argument). Time in equilibrium mean collision times; temperatures in energy units with
 /// the mass of species 0 equal to 1. Two species: set `initial.mass_ratio` (m1/m0),
 /// `initial.fraction` (number fraction of species 1) and, for different initial temperatures,
@@ -50,6 +59,12 @@ struct Config {
   Drive drive = Drive::none;  ///< white_noise: hard spheres with restitution < 1 only
   /// White-noise drive: interval between the velocity kicks (mean collision times).
   double drive_dt = 0.05;
+  /// Uniform shear flow u_x = a y (dsmc/shear.hpp): the rate a per mean collision time at
+  /// kT0, 0 <= a <= max_shear_rate (0: no flow, the engine of an unsheared gas). D >= 2, the
+  /// exact scheme, no drive.
+  double shear_rate = 0.0;
+  /// With shear_rate > 0: none or isokinetic (elastic collisions only).
+  Thermostat thermostat = Thermostat::none;
 };
 
 /// Throws InvalidInput if `c` cannot be run.
@@ -73,6 +88,20 @@ inline void validate(const Config& c) {
                          "gas driven by noise heats without bound)");
     if (!(std::isfinite(c.drive_dt) && c.drive_dt > 0.0 && c.drive_dt <= 1.0))
       throw InvalidInput("DSMC: the drive's kick interval must be in (0, 1]");
+  }
+  if (!(std::isfinite(c.shear_rate) && c.shear_rate >= 0.0 && c.shear_rate <= max_shear_rate))
+    throw InvalidInput("DSMC: the shear rate must be in [0, 100] (per mean collision time)");
+  if (c.shear_rate == 0.0 && c.thermostat != Thermostat::none)
+    throw InvalidInput("DSMC: a thermostat needs a shear rate > 0 (a gas at rest keeps its "
+                       "temperature)");
+  if (c.shear_rate != 0.0) {
+    if (c.scheme != Scheme::exact)
+      throw InvalidInput("DSMC: the shear flow runs on the exact scheme only");
+    if (c.drive != Drive::none)
+      throw InvalidInput("DSMC: the shear flow and the white-noise drive cannot be combined");
+    if (c.thermostat == Thermostat::isokinetic && c.restitution != 1.0)
+      throw InvalidInput("DSMC: the isokinetic thermostat holds an elastic gas; a granular "
+                         "sheared gas reaches its steady state without one");
   }
 }
 

@@ -73,6 +73,7 @@
 #include "hypergas/dsmc/detail/stepping.hpp"
 #include "hypergas/dsmc/huge_pages.hpp"
 #include "hypergas/dsmc/models.hpp"
+#include "hypergas/dsmc/shear.hpp"
 #include "hypergas/dsmc/time_unit.hpp"
 #include "hypergas/initial_state.hpp"
 #include "hypergas/observer.hpp"
@@ -140,10 +141,12 @@ class Engine {
   /// its current temperature: dsmc/granular.hpp).
   double time() const { return s_.time; }
   /// Time in mean collision times at the initial temperature (equals time() unless the gas
-  /// cools freely: dsmc/granular.hpp).
-  double real_time() const { return detail::cooling(s_) ? s_.real_time : s_.time; }
+  /// cools freely, dsmc/granular.hpp, or is sheared without thermostat, dsmc/shear.hpp).
+  double real_time() const { return detail::scaled_state(s_) ? s_.real_time : s_.time; }
+  /// The shear rate a per mean collision time at kT0 (0: no shear flow; dsmc/shear.hpp).
+  double shear_rate() const { return s_.cfg.shear_rate; }
   /// The particles' stored velocities are the true ones divided by exp(log_velocity_scale())
-  /// (0 unless the gas cools freely).
+  /// (0 unless the state is scaled: a freely cooling gas, a sheared one without thermostat).
   double log_velocity_scale() const { return s_.log_scale; }
   /// The temperature of the true velocities, sum m v^2 / (D (N - 1)) (energy units).
   double temperature() const {
@@ -227,6 +230,8 @@ class Engine {
       return Model{};
   }
   void advance_to(double t_end) {
+    if constexpr (D >= 2)
+      if (detail::sheared(s_)) return detail::advance_sheared(s_, poll_, t_end);
     if (s_.cfg.scheme == Scheme::lanes) detail::advance_lanes(s_, lanes_, poll_, t_end);
     else detail::advance_to(s_, blocks_, poll_, t_end);
   }
@@ -246,6 +251,8 @@ template <int D, class Model, Features F>
 Engine<D, Model, F>::Engine(const Config& cfg, checkpoint::Reader& in)
     : s_(cfg, make_model(cfg)) {
   io(in);
+  validate(s_.cfg);  // a damaged or forged file's configuration is refused, not run
+  if (s_.cfg.shear_rate != 0.0 && D < 2) throw InvalidInput("checkpoint: a shear flow in D = 1");
 }
 
 template <int D, class Model, Features F>
@@ -271,8 +278,9 @@ void Engine<D, Model, F>::observe(Observer& obs) {
   snap.time = s_.time;
   snap.collisions = s_.collisions;
   snap.collisions_per_particle = collisions_per_particle();
-  // A granular gas's temperature changes between rows: its moments come from a pass.
-  snap.tally = s_.impulse == 1.0 ? &s_.tally : nullptr;
+  // A granular or sheared gas's temperature changes between rows, and a sheared gas's
+  // collisions do not see its true velocities: their moments come from a pass.
+  snap.tally = s_.impulse == 1.0 && !detail::sheared(s_) ? &s_.tally : nullptr;
   snap.log_velocity_scale = s_.log_scale;
   snap.real_time = real_time();
   if constexpr (F.species) {
@@ -326,6 +334,9 @@ Engine<D, Model, F>::Engine(const Config& cfg, ParticlesT particles, bool given)
   s_.impulse = impulse_of(cfg);
   if (cfg.drive != Drive::none && !Model::supports_drive)
     throw InvalidInput("DSMC: the white-noise drive is defined for hard spheres (--model hs)");
+  if (cfg.shear_rate != 0.0 && D < 2)
+    throw InvalidInput("DSMC: a shear flow needs D >= 2 (the flow is along x, its gradient along "
+                       "y)");
   if (cfg.drive != Drive::none && D < 2)
     throw InvalidInput("DSMC: the white-noise drive needs D >= 2 (its strength comes from the "
                        "Sonine theory of D >= 2)");

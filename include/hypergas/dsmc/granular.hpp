@@ -62,9 +62,11 @@ bool cooling(const State<D, Model, F>& s) {
 }
 
 /// Renormalises the stored velocities of a cooling gas to kT0 (see the file comment) and
-/// sets the majorant; the candidate count since the last scan restarts.
+/// sets the majorant; the candidate count since the last scan restarts. `record`: the
+/// factor goes into log_scale (false: a gas whose energy is held, where it is 1 to
+/// rounding: the sheared gas under the isokinetic thermostat, dsmc/shear.hpp).
 template <int D, class Model, Features F>
-void renormalise(State<D, Model, F>& s) {
+void renormalise(State<D, Model, F>& s, bool record = true) {
   constexpr int S = State<D, Model, F>::stride;
   double* v = s.p.velocity_data().data();
   const std::size_t n = s.p.size();
@@ -96,7 +98,7 @@ void renormalise(State<D, Model, F>& s) {
       }
       m2 = std::max(m2, u);
     }
-    s.log_scale -= std::log(f);
+    if (record) s.log_scale -= std::log(f);
   }
   s.bound.set(m2);
   s.since_scan = 0;

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <random>
+#include <string>
 
 #include "hypergas/dsmc/config.hpp"
 #include "hypergas/error.hpp"
@@ -108,6 +109,11 @@ void advance_exact(State<D, Model, F>& s, ParallelBlocks& blocks,
     const double hmax = 2.0 * s.n / s.lambda;  // epochs of ~2N candidates
     const bool capped = h > hmax;
     if (capped) h = hmax;
+    // a rate that leaves the clock where it is (a damaged or forged checkpoint) is refused,
+    // not run for ever
+    if (!(s.time + h > s.time) || !std::isfinite(s.lambda))
+      throw InvalidInput("DSMC: the candidate rate " + std::to_string(s.lambda) +
+                         " cannot advance the clock from t = " + std::to_string(s.time));
     std::poisson_distribution<std::uint64_t> pois(s.lambda * h);
     const std::uint64_t m = pois(s.rng);
     const double t0 = s.time;

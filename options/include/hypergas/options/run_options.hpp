@@ -31,6 +31,8 @@ struct RunOptions {
   double restitution = 1.0;    ///< coefficient of normal restitution alpha
   std::string drive;           ///< DSMC energy input: "none" or "white-noise"
   double drive_dt = 0.0;       ///< DSMC: interval between white-noise kicks
+  double shear_rate = 0.0;     ///< DSMC uniform shear flow u_x = a y: a (0: none)
+  std::string thermostat;      ///< DSMC sheared gas: "none" or "isokinetic"
   std::string scheme;          ///< DSMC time scheme (registry::schemes)
   double dt = 0.0;             ///< DSMC NTC time step
   long long lane_size = 0;     ///< DSMC lanes scheme: particles per lane (0: the default)
@@ -106,6 +108,9 @@ void check_start_packing(double start, double packing);
 /// name.
 dsmc::Drive drive_kind(std::string_view name);
 std::string_view drive_name(dsmc::Drive d);
+/// "none" / "isokinetic" and the thermostat they name; throws InvalidInput for another name.
+dsmc::Thermostat thermostat_kind(std::string_view name);
+std::string_view thermostat_name(dsmc::Thermostat t);
 
 /// Parses the whole of `text` as a T for `option`, or throws InvalidInput naming the option
 /// and the text: doubles in decimal or scientific notation (nan and inf parse; ranges refuse

@@ -1,0 +1,65 @@
+"""Uniform shear flow from Python: the shear_rate and thermostat keywords of hypergas.DSMC,
+the steady shear stress of Maxwell molecules against the exact rheology
+(docs/validation.md, "Uniform shear flow"), the held temperature of the isokinetic
+thermostat, and bad values."""
+
+import math
+
+import numpy as np
+import pytest
+
+import hypergas as hg
+
+
+def maxwell_shear_3d(a, n):
+    """P_xy / p and P_yy / p of the steady state (r = N / (2 (N - 1)); in 3D the thermostat
+    rate has the closed form of Garzo and Santos)."""
+    r = n / (2.0 * (n - 1.0))
+    zeta = r * (2.0 / 3.0) * math.sinh(math.acosh(1.0 + 9.0 * (a / r) ** 2) / 6.0) ** 2
+    return -a * r / (r + 2 * zeta) ** 2, r / (r + 2 * zeta)
+
+
+def pressure(v):
+    p = v.T @ v / (len(v) - 1)
+    return p / (np.trace(p) / v.shape[1])
+
+
+@pytest.mark.parametrize("thermostat", ["none", "isokinetic"])
+def test_maxwell_shear_stress(thermostat):
+    # N = 50000, samples every 0.5 over [20, 120]: 201 samples, 10 blocks of 10 mean
+    # collision times; 5 block standard errors (t with 9 dof: P(|t| > 5) = 7.4e-4 per
+    # comparison, two comparisons)
+    n, a = 50_000, 1.0
+    g = hg.DSMC(dim=3, n=n, model="maxwell", init="maxwell", seed=5, shear_rate=a,
+                thermostat=thermostat)
+    g.run(20.0)
+    t0 = g.temperature
+    xy, yy = [], []
+    for k in range(201):
+        g.run(20.0 + 0.5 * k)
+        p = pressure(g.velocities)
+        xy.append(p[0, 1])
+        yy.append(p[1, 1])
+        if thermostat == "isokinetic":
+            assert g.temperature == pytest.approx(t0, rel=1e-12)
+    exact_xy, exact_yy = maxwell_shear_3d(a, n)
+    for series, exact in ((xy, exact_xy), (yy, exact_yy)):
+        blocks = np.array(series[:200]).reshape(10, 20).mean(axis=1)
+        se = blocks.std(ddof=1) / math.sqrt(10)
+        assert abs(blocks.mean() - exact) <= 5 * se, (blocks.mean(), se, exact)
+    if thermostat == "none":
+        assert g.temperature > 10 * t0  # viscous heating: T grows as exp(2 zeta t)
+
+
+@pytest.mark.parametrize("kw,message", [
+    (dict(shear_rate=-1.0), "shear_rate"),
+    (dict(shear_rate=math.nan), "shear_rate"),
+    (dict(thermostat="isokinetic"), "needs shear_rate > 0"),
+    (dict(shear_rate=1.0, scheme="lanes"), "exact only"),
+    (dict(shear_rate=1.0, thermostat="isokinetic", restitution=0.9), "elastic gas"),
+])
+def test_bad_shear_values(kw, message):
+    with pytest.raises(ValueError, match=message):
+        hg.DSMC(dim=3, n=100, **kw)
+    with pytest.raises(ValueError, match="dim >= 2"):
+        hg.DSMC(dim=1, n=100, mass_ratio=3.0, shear_rate=1.0)

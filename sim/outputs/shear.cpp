@@ -1,0 +1,224 @@
+// sim/outputs/shear.cpp -- the rheology of a sheared gas (--shear-rate a; dsmc/shear.hpp):
+// pressure_tensor.csv and the steady state's summary keys.
+//
+// pressure_tensor.csv, one row per sampling instant: time, real_time (mean collision times
+// at the initial temperature T0), temperature_ratio T/T0, reduced_shear_rate (a per mean
+// collision time at the current T: a (T/T0)^(-a_m/2), a_m the model's rate exponent), then
+// each component P_ij / p for i <= j followed by its standard error over the particles
+// (P_xx, P_xx_err, P_xy, P_xy_err, ...; axes x, y, z, u, v, w; the flow is along x, its
+// gradient along y). P = sum m V V^T / (N - 1) and p = tr P / D = kT, the engine's
+// temperature; V are the peculiar velocities (those of the frame moving with the flow).
+//
+// Summary keys, from the steady state: the rows of the second half of the run
+// (time >= until / 2), their means and standard errors from 10 blocks (blocks longer than
+// the stress's relaxation time, 2 mean collision times, at the default sampling):
+//   shear_stress (P_xy / p), normal_stress_xx ((P_xx - p) / p), normal_stress_yy,
+//   reduced_shear_rate,
+//   viscosity_ratio: eta(a) = -P_xy / (p a*) (a* the reduced shear rate) over the a -> 0
+//     value of the model: its first Sonine viscosity (analysis/transport_recorder.hpp; exact
+//     for Maxwell molecules, where eta(0) = 2 mean collision times x p),
+//   thermostat_rate (--thermostat isokinetic): zeta = -a* P_xy / (D p) per mean collision time,
+//   heating_rate (--thermostat none): d ln T / d real_time from the rows' temperatures, per
+//     mean collision time at T0 (a growth with viscous heating, 0 in a granular steady state),
+//   temperature_ratio (--restitution < 1): T / T0 of the granular steady state;
+// each with `_error`.
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "../output_dir.hpp"
+#include "hypergas/analysis/estimates.hpp"
+#include "hypergas/analysis/output.hpp"
+#include "hypergas/analysis/transport_recorder.hpp"
+#include "hypergas/checkpoint.hpp"
+#include "output.hpp"
+#include "../run_summary.hpp"
+#include <fmt/core.h>
+
+namespace hypergas::cli {
+
+namespace {
+
+constexpr std::size_t shear_blocks = 10;
+constexpr const char* axes = "xyzuvw";
+
+/// One row per snapshot: the pressure tensor and the temperature (see the file comment).
+class PressureTensor final : public Observer {
+ public:
+  PressureTensor(int dim, double rate, double exponent) : dim_(dim), rate_(rate), am_(exponent) {}
+
+  void observe(const Snapshot& s) override {
+    const int D = s.dim;
+    const std::size_t n = s.n;
+    std::vector<double> sum(D * D, 0.0), sq(D * D, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* v = s.velocities + i * s.stride;
+      const double m = 1.0 / s.inverse_mass(i);
+      for (int a = 0; a < D; ++a)
+        for (int b = a; b < D; ++b) {
+          const double x = m * v[a] * v[b];
+          sum[a * D + b] += x;
+          sq[a * D + b] += x * x;
+        }
+    }
+    double tr = 0.0;
+    for (int a = 0; a < D; ++a) tr += sum[a * D + a];
+    const double nm1 = static_cast<double>(n) - 1.0;
+    const double kT = tr / (D * nm1);  // stored velocities
+    const double ln_t = std::log(kT) + 2.0 * s.log_velocity_scale;
+    if (!have_t0_) {
+      ln_t0_ = ln_t;
+      have_t0_ = true;
+    }
+    const double t_ratio = std::exp(ln_t - ln_t0_);
+    std::vector<double> row{s.time, std::isnan(s.real_time) ? s.time : s.real_time, t_ratio,
+                            rate_ * std::pow(t_ratio, -0.5 * am_)};
+    const double nn = static_cast<double>(n);
+    for (int a = 0; a < D; ++a)
+      for (int b = a; b < D; ++b) {
+        const double mean = sum[a * D + b] / nn;
+        const double var = std::max(0.0, sq[a * D + b] / nn - mean * mean);
+        row.push_back(sum[a * D + b] / nm1 / kT);
+        row.push_back(std::sqrt(var * nn) / nm1 / kT);
+      }
+    rows_.push_back(std::move(row));
+  }
+  template <class Archive>
+  void io(Archive& a) {
+    a.tag("pressure-tensor");
+    a(have_t0_, ln_t0_, rows_);
+  }
+
+  std::vector<std::string> columns() const {
+    std::vector<std::string> c{"time", "real_time", "temperature_ratio", "reduced_shear_rate"};
+    for (int a = 0; a < dim_; ++a)
+      for (int b = a; b < dim_; ++b) {
+        const std::string k = std::string("P_") + axes[a] + axes[b];
+        c.push_back(k);
+        c.push_back(k + "_err");
+      }
+    return c;
+  }
+  const std::vector<std::vector<double>>& rows() const { return rows_; }
+  /// Column of P_ab (a <= b).
+  std::size_t column(int a, int b) const {
+    std::size_t c = 4;
+    for (int i = 0; i < dim_; ++i)
+      for (int j = i; j < dim_; ++j) {
+        if (i == a && j == b) return c;
+        c += 2;
+      }
+    return c;
+  }
+
+ private:
+  int dim_;
+  double rate_, am_;
+  bool have_t0_ = false;
+  double ln_t0_ = 0.0;
+  std::vector<std::vector<double>> rows_;
+};
+
+class ShearOutput final : public Output {
+ public:
+  explicit ShearOutput(const RunSetup& s)
+      : until_(s.options.until),
+        rate_(s.options.shear_rate),
+        isokinetic_(options::thermostat_kind(s.options.thermostat) ==
+                    dsmc::Thermostat::isokinetic),
+        granular_(s.options.restitution != 1.0),
+        dim_(s.options.dim),
+        tensor_(s.options.dim, s.options.shear_rate,
+                registry::model_traits(s.options.model, s.options.vhs_exponent).exponent) {
+    const registry::ModelTraits m = registry::model_traits(s.options.model, s.options.vhs_exponent);
+    eta0_ = analysis::first_sonine(analysis::CollisionLaw{m.exponent, m.isotropic_scattering},
+                                   s.options.dim)[0];
+  }
+
+  Observer* sampler() override { return &tensor_; }
+  void save(checkpoint::Writer& w) const override { w(tensor_); }
+  void load(checkpoint::Reader& r) override { r(tensor_); }
+  void write(OutputDir& out) const override {
+    analysis::write_csv(out.staged("pressure_tensor.csv").string(), tensor_.columns(),
+                        tensor_.rows());
+  }
+  void summarize(analysis::JsonObject& s) const override {
+    s.emplace_back("shear_rate", rate_);
+    s.emplace_back("thermostat", std::string(isokinetic_ ? "isokinetic" : "none"));
+    const auto& rows = tensor_.rows();
+    std::size_t b = 0;
+    while (b < rows.size() && rows[b][0] < 0.5 * until_) ++b;
+    const std::size_t e = rows.size();
+    const bool enough = e - b >= 2 * shear_blocks;
+    const auto put = [&](const std::string& key, auto&& value_of) {
+      analysis::MeanSe m;
+      if (enough) {
+        std::vector<double> y;
+        for (std::size_t i = b; i < e; ++i) y.push_back(value_of(rows[i]));
+        m = analysis::block_average(y, 0, y.size(), shear_blocks);
+      }
+      s.emplace_back(key, m.mean);
+      s.emplace_back(key + "_error", m.se);
+    };
+    const std::size_t xy = tensor_.column(0, 1), xx = tensor_.column(0, 0),
+                      yy = tensor_.column(1, 1);
+    const double d = dim_;
+    put("shear_stress", [&](const auto& r) { return r[xy]; });
+    put("normal_stress_xx", [&](const auto& r) { return r[xx] - 1.0; });
+    put("normal_stress_yy", [&](const auto& r) { return r[yy] - 1.0; });
+    put("reduced_shear_rate", [&](const auto& r) { return r[3]; });
+    put("viscosity_ratio", [&](const auto& r) { return -r[xy] / r[3] / eta0_; });
+    if (isokinetic_) {
+      put("thermostat_rate", [&](const auto& r) { return -r[3] * r[xy] / d; });
+    } else {
+      // d ln T / d real_time: each block's increments of ln T over those of real time
+      analysis::MeanSe h;
+      if (enough)
+        h = analysis::over_blocks(b, e - 1, shear_blocks, [&](std::size_t i, std::size_t j) {
+          return std::log(rows[j][2] / rows[i][2]) / (rows[j][1] - rows[i][1]);
+        });
+      s.emplace_back("heating_rate", h.mean);
+      s.emplace_back("heating_rate_error", h.se);
+    }
+    if (granular_) put("temperature_ratio", [&](const auto& r) { return r[2]; });
+  }
+  void report(std::string& text, const analysis::JsonObject& summary) const override {
+    if (!std::isfinite(summary_number(summary, "shear_stress_error"))) {
+      text += fmt::format("  shear flow a = {}: fewer than {} samples in the second half of the "
+                          "run, no steady state (pressure_tensor.csv has every sample)\n",
+                          rate_, 2 * shear_blocks);
+      return;
+    }
+    const auto pm = [&](const char* k) {
+      return fmt::format("{:.5g} +- {:.2g}", summary_number(summary, k),
+                         summary_number(summary, std::string(k) + "_error"));
+    };
+    text += fmt::format("  shear flow a = {} ({}): P_xy/p = {}, (P_xx-p)/p = {}, "
+                        "(P_yy-p)/p = {}, eta(a)/eta(0) = {} (second half; pressure_tensor.csv)\n",
+                        rate_, isokinetic_ ? "isokinetic" : "no thermostat",
+                        pm("shear_stress"), pm("normal_stress_xx"), pm("normal_stress_yy"),
+                        pm("viscosity_ratio"));
+  }
+
+ private:
+  double until_, rate_;
+  bool isokinetic_, granular_;
+  int dim_;
+  PressureTensor tensor_;
+  double eta0_ = 1.0;
+};
+
+}  // namespace
+
+namespace outputs {
+extern const OutputKind shear{
+    "shear",
+    [](const RunOptions& o, registry::EngineKind e) {
+      return e == registry::EngineKind::dsmc && o.shear_rate != 0.0;
+    },
+    make_output<ShearOutput>};
+}
+
+}  // namespace hypergas::cli

@@ -1,0 +1,207 @@
+// Uniform shear flow in the DSMC engine (dsmc/shear.hpp; docs/validation.md, "Uniform shear
+// flow"): Maxwell molecules against their exact rheology in D = 2..6 (dsmc/shear_theory.hpp),
+// with and without the isokinetic thermostat; the exact finite-N mean of the transient; the
+// thermostat's energy; and the reduction to the unsheared engine at a = 0.
+//
+// Statistics. A steady-state run of N = 1e5 samples P / p every 0.25 mean collision times
+// over [40, 240] (the transient decays as exp(-r t) or faster, r ~ 1/2: e^-20 at t = 40); the
+// 801 samples are cut into 20 blocks of 10 mean collision times (five stress relaxation
+// times), and the error is the standard error of the 20 block means. A comparison passes
+// within 5 standard errors: for a t-distribution with 19 degrees of freedom
+// P(|t| > 5) = 8.0e-5, and the test case makes 58 comparisons, so it fails falsely with
+// probability 4.6e-3 if the blocks were independent (they are nearly so: 10 mean collision
+// times against a correlation time of 2). The test also requires each tolerance, 5 se, to
+// be at most 0.5 % of the value compared: the precision the rheology is tested at. The
+// shear rates are those where P_yy / p >= 0.5 (its absolute error is about the same at
+// every a, so its relative error grows as P_yy falls: 3.5e-4 at this N and length).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "hypergas/analysis/estimates.hpp"
+#include "hypergas/dsmc/engine.hpp"
+#include "hypergas/dsmc/shear_theory.hpp"
+#include "hypergas/observer.hpp"
+
+using namespace hypergas;
+
+namespace {
+
+/// Per sample: P_xx, P_xy, P_yy, P_zz (mean of the other axes) and P_xz over p; the true
+/// temperature; the real time.
+struct Tensor final : Observer {
+  double from = 0.0;
+  std::vector<double> xx, xy, yy, zz, xz, T, real_time;
+  void observe(const Snapshot& s) override {
+    if (s.time < from) return;
+    const int D = s.dim;
+    double p[5] = {}, tr = 0.0;
+    for (std::size_t i = 0; i < s.n; ++i) {
+      const double* v = s.velocities + i * s.stride;
+      p[0] += v[0] * v[0], p[1] += v[0] * v[1], p[2] += v[1] * v[1];
+      for (int k = 2; k < D; ++k) p[3] += v[k] * v[k];
+      if (D > 2) p[4] += v[0] * v[2];
+      for (int k = 0; k < D; ++k) tr += v[k] * v[k];
+    }
+    const double kT = tr / D;
+    xx.push_back(p[0] / kT), xy.push_back(p[1] / kT), yy.push_back(p[2] / kT);
+    zz.push_back(D > 2 ? p[3] / (D - 2) / kT : 0.0), xz.push_back(p[4] / kT);
+    T.push_back(kT / (static_cast<double>(s.n) - 1.0) * std::exp(2.0 * s.log_velocity_scale));
+    real_time.push_back(std::isnan(s.real_time) ? s.time : s.real_time);
+  }
+};
+
+constexpr std::size_t n_blocks = 20;
+constexpr double tolerance_se = 5.0;
+
+analysis::MeanSe blocks(const std::vector<double>& y) {
+  return analysis::block_average(y, 0, y.size(), n_blocks);
+}
+
+/// Compares a block estimate with an exact value: within 5 se, and (nonzero values) at a
+/// precision of 0.5 % or better.
+void check(const char* what, const analysis::MeanSe& m, double exact, bool precision = true) {
+  INFO(what << ": " << m.mean << " +- " << m.se << " against " << exact);
+  CHECK(std::abs(m.mean - exact) <= tolerance_se * m.se);
+  if (precision) CHECK(tolerance_se * m.se <= 0.005 * std::abs(exact));
+}
+
+template <int D>
+void steady_maxwell(double a, dsmc::Thermostat th) {
+  dsmc::Config c;
+  c.n = 100000;
+  c.init = InitialState::maxwell;
+  c.seed = 17 + D;
+  c.shear_rate = a;
+  c.thermostat = th;
+  dsmc::Engine<D, dsmc::MaxwellMolecules> e(c);
+  Tensor t;
+  t.from = 40.0;
+  e.run_until(240.0, &t, 0.25);
+  REQUIRE(t.xx.size() == 801);
+  const dsmc::MaxwellShear exact = dsmc::maxwell_shear(D, a, static_cast<double>(c.n));
+  INFO("D = " << D << ", a = " << a
+              << (th == dsmc::Thermostat::isokinetic ? ", isokinetic" : ", no thermostat"));
+  check("P_xx/p", blocks(t.xx), exact.pxx);
+  check("P_yy/p", blocks(t.yy), exact.pyy);
+  check("P_xy/p", blocks(t.xy), exact.pxy);
+  if (D > 2) {
+    check("P_zz/p", blocks(t.zz), exact.pzz);
+    check("P_xz/p", blocks(t.xz), 0.0, false);
+  }
+  if (th == dsmc::Thermostat::isokinetic) {
+    // the Gaussian thermostat holds the energy at every sample to rounding
+    for (double T : t.T) REQUIRE(std::abs(T - t.T.front()) <= 1e-12 * T);
+    std::vector<double> zeta;
+    for (double x : t.xy) zeta.push_back(-a * x / D);
+    check("thermostat rate", blocks(zeta), exact.zeta);
+  } else {
+    // heating: d ln T / dt per block, against 2 zeta
+    const auto h = analysis::over_blocks(0, t.T.size() - 1, n_blocks, [&](std::size_t i, std::size_t j) {
+      return std::log(t.T[j] / t.T[i]) / (t.real_time[j] - t.real_time[i]);
+    });
+    check("heating rate", h, 2.0 * exact.zeta);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("Maxwell molecules in shear flow: exact rheology, D = 2..6", "[dsmc][shear]") {
+  using enum dsmc::Thermostat;
+  steady_maxwell<2>(0.5, isokinetic);
+  steady_maxwell<2>(1.0, none);
+  steady_maxwell<3>(0.5, none);
+  steady_maxwell<3>(1.2, isokinetic);
+  steady_maxwell<4>(0.5, isokinetic);
+  steady_maxwell<4>(1.2, none);
+  steady_maxwell<5>(0.5, none);
+  steady_maxwell<5>(1.2, isokinetic);
+  steady_maxwell<6>(0.5, isokinetic);
+  steady_maxwell<6>(1.2, none);
+}
+
+TEST_CASE("Maxwell molecules in shear flow: the exact mean of the transient", "[dsmc][shear]") {
+  // Without thermostat the mean of P = sum v v^T / (N - 1) obeys a linear law exactly at
+  // every N (dsmc/shear_theory.hpp). 24 replicas of N = 4000 in 4D at a = 1.5: the replica
+  // mean of P_ij(t) / T0 at t = 0.5, 1, 2, 4 against the law, within 4.5 se (t with 23 dof:
+  // P(|t| > 4.5) = 1.6e-4 per comparison, 16 comparisons).
+  constexpr int D = 4, R = 24;
+  const double a = 1.5, times[] = {0.5, 1.0, 2.0, 4.0};
+  std::vector<std::vector<double>> got(16);
+  for (int r = 0; r < R; ++r) {
+    dsmc::Config c;
+    c.n = 4000;
+    c.init = InitialState::maxwell;
+    c.seed = 100 + r;
+    c.shear_rate = a;
+    dsmc::Engine<D, dsmc::MaxwellMolecules> e(c);
+    const double T0 = e.temperature();
+    for (int k = 0; k < 4; ++k) {
+      e.run_until(times[k]);
+      Tensor t;
+      e.observe(t);
+      const double T = t.T[0] / T0;
+      got[4 * k + 0].push_back(t.xx[0] * T), got[4 * k + 1].push_back(t.xy[0] * T);
+      got[4 * k + 2].push_back(t.yy[0] * T), got[4 * k + 3].push_back(t.zz[0] * T);
+    }
+  }
+  for (int k = 0; k < 4; ++k) {
+    const auto exact = dsmc::maxwell_shear_moments(D, a, 4000.0, times[k]);
+    for (int c = 0; c < 4; ++c) {
+      const analysis::MeanSe m = analysis::mean_se(got[4 * k + c]);
+      INFO("t = " << times[k] << ", component " << c << ": " << m.mean << " +- " << m.se
+                  << " against " << exact[c]);
+      CHECK(std::abs(m.mean - exact[c]) <= 4.5 * m.se);
+    }
+  }
+}
+
+TEST_CASE("Shear flow: the theory's closed forms", "[dsmc][shear]") {
+  // 3D against the Garzo-Santos closed form zeta/r = (2/3) sinh^2[(1/6) arccosh(1 + 9 (a/r)^2)]
+  for (double a : {0.1, 1.0, 5.0}) {
+    const auto s = dsmc::maxwell_shear(3, a);
+    const double r = 0.5, x = a / r;
+    CHECK(s.zeta / r == Approx((2.0 / 3.0) * std::pow(std::sinh(std::acosh(1 + 9 * x * x) / 6), 2))
+                            .epsilon(1e-12));
+    // the trace, and the steady solution of the linear law's long-time ratios
+    CHECK(s.pxx + 2 * s.pyy == Approx(3.0).epsilon(1e-14));
+    const auto m = dsmc::maxwell_shear_moments(3, a, 0.0, 200.0 / (1 + a));
+    const double T = (m[0] + m[2] + m[3]) / 3;
+    CHECK(m[1] / T == Approx(s.pxy).epsilon(1e-6));
+    CHECK(m[0] / T == Approx(s.pxx).epsilon(1e-6));
+  }
+  // a -> 0: Navier-Stokes, P_xy = -a / r
+  CHECK(dsmc::maxwell_shear(5, 1e-4).pxy == Approx(-2e-4).epsilon(1e-6));
+}
+
+TEST_CASE("Shear flow: bad configurations are refused", "[dsmc][shear]") {
+  dsmc::Config c;
+  c.n = 100;
+  c.init = InitialState::maxwell;
+  const auto refused = [&](auto&& set) {
+    dsmc::Config k = c;
+    set(k);
+    try {
+      dsmc::Engine<3, dsmc::HardSpheres> e(k);
+      return false;
+    } catch (const InvalidInput&) {
+      return true;
+    }
+  };
+  CHECK(refused([](dsmc::Config& k) { k.shear_rate = -1.0; }));
+  CHECK(refused([](dsmc::Config& k) { k.shear_rate = std::nan(""); }));
+  CHECK(refused([](dsmc::Config& k) { k.shear_rate = 1e3; }));
+  CHECK(refused([](dsmc::Config& k) { k.thermostat = dsmc::Thermostat::isokinetic; }));
+  CHECK(refused([](dsmc::Config& k) { k.shear_rate = 1, k.scheme = dsmc::Scheme::lanes; }));
+  CHECK(refused([](dsmc::Config& k) {
+    k.shear_rate = 1, k.restitution = 0.9, k.thermostat = dsmc::Thermostat::isokinetic;
+  }));
+  dsmc::Config one = c;
+  one.shear_rate = 1.0;
+  one.init = InitialState::delta;
+  one.initial.mass_ratio = 3.0;
+  one.initial.fraction = 0.5;
+  CHECK_THROWS_AS((dsmc::Engine<1, dsmc::HardSpheres, Features{.species = true}>(one)),
+                  InvalidInput);
+}

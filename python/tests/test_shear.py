@@ -63,3 +63,40 @@ def test_bad_shear_values(kw, message):
         hg.DSMC(dim=3, n=100, **kw)
     with pytest.raises(ValueError, match="dim >= 2"):
         hg.DSMC(dim=1, n=100, mass_ratio=3.0, shear_rate=1.0)
+
+
+def test_example_13_runs(tmp_path, cli):
+    """examples/13-shear: its commands on smaller plans (2 dimensions, 2 shear rates,
+    fewer particles and a shorter time), then analyse.py."""
+    import os
+    import pathlib
+    import subprocess
+    import sys
+    ex = pathlib.Path(__file__).resolve().parents[2] / "examples" / "13-shear"
+    cli = os.path.abspath(cli)
+    for name in ("maxwell", "hs"):
+        plan = (ex / f"{name}.toml").read_text()
+        for a, b in (("n = 20000", "n = 4000"), ("until = 120", "until = 60"),
+                     ("dim = [2, 3, 4, 5, 6]", "dim = [2, 5]"),
+                     ("shear_rate = [0.25, 0.5, 1, 2, 4]", "shear_rate = [0.5, 2]")):
+            assert a in plan
+            plan = plan.replace(a, b)
+        (tmp_path / f"{name}.toml").write_text(plan)
+        subprocess.run([cli, "sweep", f"{name}.toml", "--out", f"out/usf-{name}"],
+                       cwd=tmp_path, check=True, capture_output=True)
+    subprocess.run([cli, "run", "--model", "hs", "--dim", "3", "--n", "20000", "--init",
+                    "maxwell", "--shear-rate", "2", "--thermostat", "isokinetic", "--until",
+                    "30", "--every", "0.5", "--trajectory-every", "10", "--out", "out/usf3"],
+                   cwd=tmp_path, check=True, capture_output=True)
+    subprocess.run([cli, "run", "--model", "hs", "--dim", "3", "--n", "5000", "--init",
+                    "maxwell", "--restitution", "0.9", "--shear-rate", "1", "--until", "100",
+                    "--out", "out/granular"], cwd=tmp_path, check=True, capture_output=True)
+    r = subprocess.run([sys.executable, str(ex / "analyse.py"), "out/usf-maxwell",
+                        "out/usf-hs", "out/usf3", "out/granular"], cwd=tmp_path, check=True,
+                       capture_output=True, text=True,
+                       env=dict(os.environ, PYTHONPATH=str(pathlib.Path(hg.__file__)
+                                                           .resolve().parents[1])))
+    worst = float(r.stdout.split("largest Maxwell deviation: ")[1].split()[0])
+    assert worst < 5.0, r.stdout  # 4 cases, each within 5 se: false failure below 3e-3
+    assert "tails: 3D hard spheres at a = 2, 3 frames of 20000 particles" in r.stdout
+    assert "granular steady state" in r.stdout

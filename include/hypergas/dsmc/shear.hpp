@@ -128,6 +128,7 @@ template <int D, class Model, Features F>
 void advance_sheared(State<D, Model, F>& s, const std::function<void()>& poll, double t_end) {
   constexpr int S = State<D, Model, F>::stride;
   constexpr double max_strain = 0.1, max_span = 0.5;
+  constexpr std::uint64_t ahead = 8;  // candidates between a prefetch and its use
   const bool thermostat = s.cfg.thermostat == Thermostat::isokinetic;
   const double am = s.model.exponent();
   ShearMap m;
@@ -157,6 +158,14 @@ void advance_sheared(State<D, Model, F>& s, const std::function<void()>& poll, d
       std::uint32_t i, j;
       double u;
       s.draw(K, i, j, u);
+      {
+        // the pair of a candidate `ahead` further on is a function of its number alone:
+        // fetch its two velocities now, so that a large gas waits on memory less often
+        std::uint32_t pi, pj;
+        s.draw_pair(K + ahead, pi, pj);
+        __builtin_prefetch(v + std::size_t(pi) * S);
+        __builtin_prefetch(v + std::size_t(pj) * S);
+      }
       const double sig = rate * (t - t0);
       const double lam = thermostat ? m.lam_at(sig) : 1.0;
       double* wi = v + std::size_t(i) * S;

@@ -44,7 +44,8 @@ except ImportError:
 from ._engines import DSMC, EDMD
 from ._analysis import (Analysis, Report, SpeedHistogram, analyse, maxwell_cdf, maxwell_pdf, msd,
                         report, vacf, MomentsRecorder, VacfRecorder,
-                        TransportRecorder, HelfandRecorder, StructureRecorder)
+                        TransportRecorder, HelfandRecorder, StructureRecorder,
+                        PressureTensorRecorder)
 from ._sweep import read_sweep
 from ._run import run
 from ._trajectory import Trajectory, read_trajectory
@@ -57,5 +58,5 @@ jamming_packing = _hypergas.jamming_packing
 
 __all__ = ["DSMC", "EDMD", "Analysis", "Report", "SpeedHistogram", "analyse", "maxwell_pdf",
            "maxwell_cdf", "vacf", "msd", "report", "MomentsRecorder", "VacfRecorder",
-           "TransportRecorder", "HelfandRecorder", "StructureRecorder",
+           "TransportRecorder", "HelfandRecorder", "StructureRecorder", "PressureTensorRecorder",
            "read_sweep", "run", "read_trajectory", "Trajectory", "models", "initial_states", "schemes", "jamming_packing"]

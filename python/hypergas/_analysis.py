@@ -30,6 +30,19 @@ def _table(self):
 
 MomentsRecorder.table = _table
 
+PressureTensorRecorder = _hypergas.PressureTensorRecorder
+PressureTensorRecorder.__doc__ = """The pressure tensor of a (sheared) gas: the rows of the command's
+pressure_tensor.csv, one per observation.
+
+PressureTensorRecorder(dim, shear_rate=0.0, model="hs", vhs_exponent=0.5): columns time,
+real_time, temperature_ratio (T/T0, T0 of the first observation), reduced_shear_rate
+(shear_rate per mean collision time at the current T), then P_ij/p for i <= j, each with
+its standard error over the particles (P_xx, P_xx_err, P_xy, ...; axes x, y, z, u, v, w).
+``columns``, ``rows`` (an (observations, columns) array) and ``table()`` (a dict of
+columns). Feed it with ``engine.run(..., observers=[rec])`` or ``engine.observe(rec)``.
+"""
+PressureTensorRecorder.table = _table
+
 VacfRecorder = _hypergas.VacfRecorder
 VacfRecorder.__doc__ = """Velocity autocorrelation and mean squared displacement of a run.
 

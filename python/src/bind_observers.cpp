@@ -22,6 +22,7 @@
 #include "hypergas/analysis/histogram.hpp"
 #include "hypergas/analysis/maxwell.hpp"
 #include "hypergas/analysis/moments_recorder.hpp"
+#include "hypergas/analysis/pressure_tensor_recorder.hpp"
 #include "hypergas/analysis/structure_recorder.hpp"
 #include "hypergas/analysis/transport_recorder.hpp"
 #include "hypergas/analysis/vacf_recorder.hpp"
@@ -48,6 +49,14 @@ py::dict histogram_dict(const analysis::Histogram& h, const analysis::MaxwellRef
   d["maxwell_density"] = mb, d["kT"] = ref.kT, d["mass"] = ref.mass, d["dim"] = ref.dim;
   d["underflow"] = h.underflow(), d["overflow"] = h.overflow();
   return d;
+}
+
+/// A recorder's rows as an (observations, columns) array.
+py::array_t<double> rows_array(const std::vector<std::vector<double>>& rows, std::size_t c) {
+  py::array_t<double> a({rows.size(), c});
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (std::size_t j = 0; j < c; ++j) a.mutable_at(i, j) = rows[i][j];
+  return a;
 }
 
 }  // namespace
@@ -77,12 +86,7 @@ void bind_observers(py::module_& m) {
       .def_property_readonly("columns", &analysis::MomentsRecorder::columns)
       .def_property_readonly("rows",
                              [](const analysis::MomentsRecorder& r) {
-                               const auto& rows = r.rows();
-                               const std::size_t c = r.columns().size();
-                               py::array_t<double> a({rows.size(), c});
-                               for (std::size_t i = 0; i < rows.size(); ++i)
-                                 for (std::size_t j = 0; j < c; ++j) a.mutable_at(i, j) = rows[i][j];
-                               return a;
+                               return rows_array(r.rows(), r.columns().size());
                              })
       .def("column", [](const analysis::MomentsRecorder& r,
                         const std::string& name) { return to_numpy(r.column(name)); })
@@ -101,6 +105,23 @@ void bind_observers(py::module_& m) {
       .def("write_moments_csv", &analysis::MomentsRecorder::write_moments_csv)
       .def("write_speed_histogram_csv", &analysis::MomentsRecorder::write_speed_histogram_csv,
            py::arg("path"), py::arg("species") = -1);
+
+  py::class_<analysis::PressureTensorRecorder, Observer>(m, "PressureTensorRecorder")
+      .def(py::init([](const py::object& dim, const py::object& shear_rate,
+                       const std::string& model, const py::object& vhs_exponent) {
+             const long long d = as_integer("dim", dim);
+             if (d < 2 || d > 6) throw InvalidInput("dim must be in 2..6, got " + std::to_string(d));
+             const registry::ModelTraits t =
+                 registry::model_traits(model, as_real("vhs_exponent", vhs_exponent));
+             return std::make_unique<analysis::PressureTensorRecorder>(
+                 static_cast<int>(d), as_real("shear_rate", shear_rate), t.exponent);
+           }),
+           py::arg("dim"), py::arg("shear_rate") = 0.0, py::arg("model") = "hs",
+           py::arg("vhs_exponent") = 0.5)
+      .def_property_readonly("columns", &analysis::PressureTensorRecorder::columns)
+      .def_property_readonly("rows", [](const analysis::PressureTensorRecorder& r) {
+        return rows_array(r.rows(), r.columns().size());
+      });
 
   py::class_<analysis::VacfRecorder, Observer>(m, "VacfRecorder")
       .def(py::init([](const py::object& max_particles) {

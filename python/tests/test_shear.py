@@ -35,13 +35,23 @@ def test_maxwell_shear_stress(thermostat):
     g.run(20.0)
     t0 = g.temperature
     xy, yy = [], []
+    rec = hg.PressureTensorRecorder(3, shear_rate=a, model="maxwell")
     for k in range(201):
         g.run(20.0 + 0.5 * k)
+        g.observe(rec)
         p = pressure(g.velocities)
         xy.append(p[0, 1])
         yy.append(p[1, 1])
+    # the recorder's rows are the command's pressure_tensor.csv: the same tensor
+    table = rec.table()
+    assert np.allclose(table["P_xy"], xy, rtol=0, atol=1e-12)
+    assert np.allclose(table["P_yy"], yy, rtol=0, atol=1e-12)
+    assert np.all(table["reduced_shear_rate"] == pytest.approx(a, rel=1e-12))
+    for k in range(201):
         if thermostat == "isokinetic":
-            assert g.temperature == pytest.approx(t0, rel=1e-12)
+            assert table["temperature_ratio"][k] == pytest.approx(1.0, rel=1e-12)
+    if thermostat == "isokinetic":
+        assert g.temperature == pytest.approx(t0, rel=1e-12)
     exact_xy, exact_yy = maxwell_shear_3d(a, n)
     for series, exact in ((xy, exact_xy), (yy, exact_yy)):
         blocks = np.array(series[:200]).reshape(10, 20).mean(axis=1)

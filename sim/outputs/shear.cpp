@@ -1,7 +1,7 @@
 // sim/outputs/shear.cpp -- the rheology of a sheared gas (--shear-rate a; dsmc/shear.hpp):
 // pressure_tensor.csv and the steady state's summary keys.
 //
-// pressure_tensor.csv, one row per sampling instant: time, real_time (mean collision times
+// pressure_tensor.csv (analysis/pressure_tensor_recorder.hpp), one row per sampling instant: time, real_time (mean collision times
 // at the initial temperature T0), temperature_ratio T/T0, reduced_shear_rate (a per mean
 // collision time at the current T: a (T/T0)^(-a_m/2), a_m the model's rate exponent), then
 // each component P_ij / p for i <= j followed by its standard error over the particles
@@ -31,6 +31,7 @@
 #include "../output_dir.hpp"
 #include "hypergas/analysis/estimates.hpp"
 #include "hypergas/analysis/output.hpp"
+#include "hypergas/analysis/pressure_tensor_recorder.hpp"
 #include "hypergas/analysis/transport_recorder.hpp"
 #include "hypergas/checkpoint.hpp"
 #include "output.hpp"
@@ -42,84 +43,6 @@ namespace hypergas::cli {
 namespace {
 
 constexpr std::size_t shear_blocks = 10;
-constexpr const char* axes = "xyzuvw";
-
-/// One row per snapshot: the pressure tensor and the temperature (see the file comment).
-class PressureTensor final : public Observer {
- public:
-  PressureTensor(int dim, double rate, double exponent) : dim_(dim), rate_(rate), am_(exponent) {}
-
-  void observe(const Snapshot& s) override {
-    const int D = s.dim;
-    const std::size_t n = s.n;
-    std::vector<double> sum(D * D, 0.0), sq(D * D, 0.0);
-    for (std::size_t i = 0; i < n; ++i) {
-      const double* v = s.velocities + i * s.stride;
-      const double m = 1.0 / s.inverse_mass(i);
-      for (int a = 0; a < D; ++a)
-        for (int b = a; b < D; ++b) {
-          const double x = m * v[a] * v[b];
-          sum[a * D + b] += x;
-          sq[a * D + b] += x * x;
-        }
-    }
-    double tr = 0.0;
-    for (int a = 0; a < D; ++a) tr += sum[a * D + a];
-    const double nm1 = static_cast<double>(n) - 1.0;
-    const double kT = tr / (D * nm1);  // stored velocities
-    const double ln_t = std::log(kT) + 2.0 * s.log_velocity_scale;
-    if (!have_t0_) {
-      ln_t0_ = ln_t;
-      have_t0_ = true;
-    }
-    const double t_ratio = std::exp(ln_t - ln_t0_);
-    std::vector<double> row{s.time, std::isnan(s.real_time) ? s.time : s.real_time, t_ratio,
-                            rate_ * std::pow(t_ratio, -0.5 * am_)};
-    const double nn = static_cast<double>(n);
-    for (int a = 0; a < D; ++a)
-      for (int b = a; b < D; ++b) {
-        const double mean = sum[a * D + b] / nn;
-        const double var = std::max(0.0, sq[a * D + b] / nn - mean * mean);
-        row.push_back(sum[a * D + b] / nm1 / kT);
-        row.push_back(std::sqrt(var * nn) / nm1 / kT);
-      }
-    rows_.push_back(std::move(row));
-  }
-  template <class Archive>
-  void io(Archive& a) {
-    a.tag("pressure-tensor");
-    a(have_t0_, ln_t0_, rows_);
-  }
-
-  std::vector<std::string> columns() const {
-    std::vector<std::string> c{"time", "real_time", "temperature_ratio", "reduced_shear_rate"};
-    for (int a = 0; a < dim_; ++a)
-      for (int b = a; b < dim_; ++b) {
-        const std::string k = std::string("P_") + axes[a] + axes[b];
-        c.push_back(k);
-        c.push_back(k + "_err");
-      }
-    return c;
-  }
-  const std::vector<std::vector<double>>& rows() const { return rows_; }
-  /// Column of P_ab (a <= b).
-  std::size_t column(int a, int b) const {
-    std::size_t c = 4;
-    for (int i = 0; i < dim_; ++i)
-      for (int j = i; j < dim_; ++j) {
-        if (i == a && j == b) return c;
-        c += 2;
-      }
-    return c;
-  }
-
- private:
-  int dim_;
-  double rate_, am_;
-  bool have_t0_ = false;
-  double ln_t0_ = 0.0;
-  std::vector<std::vector<double>> rows_;
-};
 
 class ShearOutput final : public Output {
  public:
@@ -206,7 +129,7 @@ class ShearOutput final : public Output {
   double until_, rate_;
   bool isokinetic_, granular_;
   int dim_;
-  PressureTensor tensor_;
+  analysis::PressureTensorRecorder tensor_;
   double eta0_ = 1.0;
 };
 

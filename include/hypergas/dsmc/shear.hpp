@@ -72,8 +72,7 @@ bool sheared(const State<D, Model, F>& s) {
 /// granular gas, or a sheared gas without thermostat.
 template <int D, class Model, Features F>
 bool scaled_state(const State<D, Model, F>& s) {
-  return (s.impulse != 1.0 && s.cfg.drive == Drive::none) ||
-         (sheared(s) && s.cfg.thermostat == Thermostat::none);
+  return cooling(s) || (sheared(s) && s.cfg.thermostat == Thermostat::none);
 }
 
 /// The map V = lam S(sig) W of a segment and the thermostat's sums (see the file comment).
@@ -91,6 +90,26 @@ struct ShearMap {
   }
   /// The spectral norm of S(s): (|s| + sqrt(s^2 + 4)) / 2.
   static double norm(double s) { return 0.5 * (std::abs(s) + std::sqrt(s * s + 4.0)); }
+  /// The stored w becomes the true velocity lam S(s) w, and back.
+  template <int D>
+  static void to_true(double* w, double s, double lam) {
+    w[0] -= s * w[1];
+    for (int k = 0; k < D; ++k) w[k] *= lam;
+  }
+  template <int D>
+  static void to_stored(double* w, double s, double lam) {
+    for (int k = 0; k < D; ++k) w[k] /= lam;
+    w[0] += s * w[1];
+  }
+  /// Adds (sign 1) or removes (-1) a pair's terms of the thermostat's sums A, B, C.
+  template <int D>
+  void account(const double* wi, const double* wj, double mi, double mj, double sign) {
+    double ui = 0.0, uj = 0.0;
+    for (int k = 0; k < D; ++k) ui += wi[k] * wi[k], uj += wj[k] * wj[k];
+    A += sign * (mi * ui + mj * uj);
+    B += sign * (mi * wi[0] * wi[1] + mj * wj[0] * wj[1]);
+    C += sign * (mi * wi[1] * wi[1] + mj * wj[1] * wj[1]);
+  }
 };
 
 /// Replaces every stored W by V = lam S(sig) W, removes the mean velocity and normalises
@@ -101,11 +120,7 @@ void rebase(State<D, Model, F>& s, ShearMap& m) {
   constexpr int S = State<D, Model, F>::stride;
   double* v = s.p.velocity_data().data();
   const std::size_t n = s.p.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    double* w = v + i * S;
-    w[0] -= m.sig * w[1];
-    for (int k = 0; k < D; ++k) w[k] *= m.lam;
-  }
+  for (std::size_t i = 0; i < n; ++i) ShearMap::to_true<D>(v + i * S, m.sig, m.lam);
   const bool thermostat = s.cfg.thermostat == Thermostat::isokinetic;
   renormalise(s, !thermostat);
   m = ShearMap{};
@@ -180,33 +195,18 @@ void advance_sheared(State<D, Model, F>& s, const std::function<void()>& poll, d
         if (!s.model.accept(lam * lam * g2, u, G)) continue;
       }
       // to true velocities, collide, and back
-      double mi = 0.0, mj = 0.0;
-      if (thermostat) {
-        mi = s.p.mass(i), mj = s.p.mass(j);
-        double ui = 0.0, uj = 0.0;
-        for (int k = 0; k < D; ++k) ui += wi[k] * wi[k], uj += wj[k] * wj[k];
-        m.A -= mi * ui + mj * uj;
-        m.B -= mi * wi[0] * wi[1] + mj * wj[0] * wj[1];
-        m.C -= mi * wi[1] * wi[1] + mj * wj[1] * wj[1];
-      }
-      for (double* w : {wi, wj}) {
-        w[0] -= sig * w[1];
-        for (int k = 0; k < D; ++k) w[k] *= lam;
-      }
+      const double mi = thermostat ? s.p.mass(i) : 0.0, mj = thermostat ? s.p.mass(j) : 0.0;
+      if (thermostat) m.account<D>(wi, wj, mi, mj, -1.0);
+      ShearMap::to_true<D>(wi, sig, lam);
+      ShearMap::to_true<D>(wj, sig, lam);
       collide_pair<Model>(s.p, i, j, s.impulse, s.draws.scattering(K), K, NoHook{});
       ++s.collisions;
-      double ui = 0.0, uj = 0.0;
-      for (double* w : {wi, wj}) {
-        for (int k = 0; k < D; ++k) w[k] /= lam;
-        w[0] += sig * w[1];
-      }
-      for (int k = 0; k < D; ++k) ui += wi[k] * wi[k], uj += wj[k] * wj[k];
-      if (thermostat) {
-        m.A += mi * ui + mj * uj;
-        m.B += mi * wi[0] * wi[1] + mj * wj[0] * wj[1];
-        m.C += mi * wi[1] * wi[1] + mj * wj[1] * wj[1];
-      }
+      ShearMap::to_stored<D>(wi, sig, lam);
+      ShearMap::to_stored<D>(wj, sig, lam);
+      if (thermostat) m.account<D>(wi, wj, mi, mj, 1.0);
       if constexpr (Model::needs_majorant) {
+        double ui = 0.0, uj = 0.0;
+        for (int k = 0; k < D; ++k) ui += wi[k] * wi[k], uj += wj[k] * wj[k];
         const double u2 = std::max(ui, uj);
         const bool raised = s.bound.exceeded_by(u2);
         if (raised) s.bound.set(u2);

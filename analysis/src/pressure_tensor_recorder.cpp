@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "hypergas/error.hpp"
@@ -28,6 +29,10 @@ void PressureTensorRecorder::observe(const Snapshot& s) {
   if (D != dim_)
     throw InvalidInput("pressure tensor: a snapshot of D = " + std::to_string(D) +
                        " for a recorder of D = " + std::to_string(dim_));
+  if (s.stress_integral) {
+    observe_integral(s);
+    return;
+  }
   const std::size_t n = s.n;
   std::vector<double> sum(D * D, 0.0), sq(D * D, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
@@ -59,6 +64,45 @@ void PressureTensorRecorder::observe(const Snapshot& s) {
       const double var = std::max(0.0, sq[a * D + b] / nn - mean * mean);
       row.push_back(sum[a * D + b] / nm1 / kT);
       row.push_back(std::sqrt(var * nn) / nm1 / kT);
+    }
+  rows_.push_back(std::move(row));
+}
+
+void PressureTensorRecorder::observe_integral(const Snapshot& s) {
+  const int D = dim_;
+  const std::size_t dd = static_cast<std::size_t>(D * D);
+  std::vector<double> P(dd);
+  // prev_: the stress integral, then the kinetic integral, at the previous snapshot
+  std::vector<double> S(s.stress_integral, s.stress_integral + dd);
+  S.insert(S.end(), s.kinetic_integral, s.kinetic_integral + dd);
+  const bool interval = have_prev_ && s.time > prev_time_;
+  const double dt = s.time - prev_time_;
+  for (std::size_t q = 0; q < dd; ++q)
+    P[q] = interval ? (S[q] - prev_[q]) / dt : s.kinetic_stress[q];
+  double trk = 0.0;  // the kinetic temperature: mean over the interval, or at the instant
+  for (int a = 0; a < D; ++a) {
+    const std::size_t q = static_cast<std::size_t>(a * D + a);
+    trk += interval ? (S[dd + q] - prev_[dd + q]) / dt : s.kinetic_stress[q];
+  }
+  prev_ = std::move(S);
+  prev_time_ = s.time;
+  have_prev_ = true;
+  const double kT = trk / (D * static_cast<double>(s.n));
+  if (!have_t0_) {
+    ln_t0_ = std::log(std::isfinite(s.shear_kT0) ? s.shear_kT0 : kT);
+    have_t0_ = true;
+  }
+  const double t_ratio = std::exp(std::log(kT) - ln_t0_);
+  std::vector<double> row{s.time, std::isnan(s.real_time) ? s.time : s.real_time, t_ratio,
+                          rate_ * std::pow(t_ratio, -0.5 * exponent_)};
+  double tr = 0.0;
+  for (int a = 0; a < D; ++a) tr += P[a * D + a];
+  const double p = tr / D;
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int a = 0; a < D; ++a)
+    for (int b = a; b < D; ++b) {
+      row.push_back(0.5 * (P[a * D + b] + P[b * D + a]) / p);
+      row.push_back(nan);
     }
   rows_.push_back(std::move(row));
 }

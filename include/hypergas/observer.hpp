@@ -67,6 +67,16 @@ struct Snapshot {
   /// Time in the unit of the initial temperature (DSMC: mean collision times at kT0), or
   /// NaN when it is `time` (every engine whose clock is not rescaled).
   double real_time = std::numeric_limits<double>::quiet_NaN();
+  /// A sheared EDMD gas (edmd/lees_edwards.hpp; nullptr elsewhere): `velocities` are the
+  /// peculiar ones (the flow's velocity at each particle subtracted), stress_integral is the
+  /// D x D row-major int sum m c c^T dt + sum_coll r dp^T since the shear started (divided
+  /// by the volume and a time interval: the pressure tensor over that interval),
+  /// kinetic_integral its kinetic part int sum m c c^T dt alone, and kinetic_stress the
+  /// current sum m c c^T; shear_kT0 is the temperature at the start.
+  const double* stress_integral = nullptr;
+  const double* kinetic_integral = nullptr;
+  const double* kinetic_stress = nullptr;
+  double shear_kT0 = std::numeric_limits<double>::quiet_NaN();
 
   /// Inverse mass of particle i (1 for a single unit-mass species).
   double inverse_mass(std::size_t i) const {

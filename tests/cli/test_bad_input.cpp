@@ -270,7 +270,7 @@ TEST_CASE("run: granular options out of range or in the wrong combination are re
                   "--drive-dt applies with --drive white-noise only");
   expect_rejected({"run", "--drive-dt", "0.1"}, "--drive-dt applies with --drive white-noise only");
   // the shear flow (dsmc/shear.hpp): D >= 2, a finite rate in [0, 100], the exact scheme,
-  // a thermostat only with shear and only for an elastic gas, not with --transport or EDMD
+  // a thermostat only with shear and only for an elastic gas, not with --transport
   expect_rejected({"run", "--shear-rate", "1", "--dim", "1", "--mass-ratio", "3"},
                   "--shear-rate needs --dim >= 2");
   for (const char* a : {"-1", "nan", "inf", "101", "x"})
@@ -290,7 +290,14 @@ TEST_CASE("run: granular options out of range or in the wrong combination are re
                   "--shear-rate and --drive white-noise cannot be combined");
   expect_rejected({"run", "--shear-rate", "1", "--transport", "--until", "500"},
                   "--transport measures the gas at equilibrium");
-  expect_rejected({"run", "--engine", "edmd", "--shear-rate", "1"}, "--shear-rate");
+  // EDMD: Lees-Edwards needs 4 cells per side; --structure is an equilibrium measurement
+  expect_rejected({"run", "--engine", "edmd", "--shear-rate", "1", "--n", "30", "--packing",
+                   "0.3"},
+                  "at least 4 cells per side");
+  expect_rejected({"run", "--engine", "edmd", "--shear-rate", "1", "--structure"},
+                  "--structure measures the fluid at equilibrium");
+  expect_rejected({"run", "--engine", "edmd", "--shear-rate", "1", "--dim", "1"},
+                  "--shear-rate needs --dim >= 2");
   expect_rejected({"run", "--restitution", "0.5", "--drive", "white-noise", "--drive-dt", "0"},
                   "--drive-dt must be a finite interval > 0 and at most 1");
   expect_rejected({"run", "--engine", "edmd", "--drive", "white-noise", "--restitution", "0.5"},

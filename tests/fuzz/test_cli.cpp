@@ -841,6 +841,10 @@ Command edmd_run(Rng& r) {
     c.opts.push_back({"--restitution", fmt_double(r.chance(0.2) ? 0.0 : r.unit(), "%.3f")});
     if (r.chance(0.3)) c.opts.push_back({"--tc-time", r.chance(0.5) ? "0" : "0.001"});
   }
+  if (r.chance(0.1)) {  // Lees-Edwards: small dense boxes are refused (4 cells per side)
+    c.opts.push_back({"--shear-rate", fmt_double(3 * r.unit(), "%.3f")});
+    if (r.chance(0.4)) c.opts.push_back({"--thermostat", r.chance(0.8) ? "isokinetic" : "none"});
+  }
   add_common_run_extras(r, c, until);
   return c;
 }
@@ -849,8 +853,7 @@ Spec edmd_spec() {
   return {run_numeric,
           {{"--model", "maxwell"}, {"--model", "hs"}, {"--model", "vhs"}, {"--temperature", "2"},
            {"--temperature", "1"}, {"--threads", "2"}, {"--threads", "1"},
-           {"--vhs-exponent", "0.5"}, {"--drive", "white-noise"}, {"--drive-dt", "0.1"},
-           {"--shear-rate", "1"}, {"--thermostat", "isokinetic"}},
+           {"--vhs-exponent", "0.5"}, {"--drive", "white-noise"}, {"--drive-dt", "0.1"}},
           {{"--json", std::nullopt}, {"--seed", "3"}, {"--init", "delta"}, {"--every", "0.1"},
            {"--mass-ratio", "2"}, {"--fraction", "0.3"}, {"--checkpoint-every", "0.3"},
            {"--packing", "0.05"}, {"--restitution", "0.8"}, {"--tc-time", "0.001"}}};

@@ -64,6 +64,44 @@ inline MaxwellShear maxwell_shear(int d, double a, double n = 0.0) {
   return s;
 }
 
+/// The uniform shear flow of inelastic Maxwell molecules without thermostat (docs/
+/// validation.md, "Uniform shear flow", granular): the engine's maxwell model with
+/// restitution alpha, whose collision gives the pair (1 + alpha)/2 of the isotropic elastic
+/// change of g. With beta = (1 + alpha)/2, nu_P = r beta (2 - beta) and nu_T = r beta^2 the
+/// collisions give dP/dt = -nu_P P + nu_T T I exactly for the mean (alpha = 1: -r (P - T I)),
+/// and the flow's linear law has P growing as exp(growth t) in the state
+///     P*_yy = P*_zz = nu_T / u,   P*_xy = -a nu_T / u^2,   P*_xx = D - (D - 1) P*_yy,
+///     (u - nu_T) u^2 = 2 a^2 nu_T / D,   growth = u - nu_P   (the root u > nu_T),
+/// where viscous heating and collisional cooling balance when growth = 0:
+/// a^2 = D nu_P^2 (nu_P - nu_T) / (2 nu_T). alpha = 1 is maxwell_shear with growth 2 zeta.
+struct MaxwellGranularShear {
+  double growth = 0.0;  ///< d ln T / dt, per mean collision time (negative: cooling)
+  double pxx = 1.0, pyy = 1.0, pzz = 1.0, pxy = 0.0;  ///< P_ij / p
+};
+
+inline MaxwellGranularShear maxwell_granular_shear(int d, double a, double alpha,
+                                                   double n = 0.0) {
+  const double r = maxwell_stress_rate(n);
+  const double beta = 0.5 * (1.0 + alpha);
+  const double nu_p = r * beta * (2.0 - beta), nu_t = r * beta * beta;
+  const double rhs = 2.0 * a * a * nu_t / d;
+  // f(u) = (u - nu_t) u^2 - rhs increases for u >= nu_t: bisection, then Newton polish
+  double lo = nu_t, hi = nu_t + std::max(1.0, std::cbrt(rhs));
+  while ((hi - nu_t) * hi * hi < rhs) hi *= 2.0;
+  for (int k = 0; k < 200 && hi - lo > 1e-17 * hi; ++k) {
+    const double u = 0.5 * (lo + hi);
+    ((u - nu_t) * u * u < rhs ? lo : hi) = u;
+  }
+  double u = 0.5 * (lo + hi);
+  for (int k = 0; k < 3; ++k) u -= ((u - nu_t) * u * u - rhs) / (3.0 * u * u - 2.0 * nu_t * u);
+  MaxwellGranularShear s;
+  s.growth = u - nu_p;
+  s.pyy = s.pzz = nu_t / u;
+  s.pxy = -a * nu_t / (u * u);
+  s.pxx = d - (d - 1) * s.pyy;
+  return s;
+}
+
 /// The mean pressure tensor without thermostat at time t from P = T0 I (elastic, one
 /// species): {P_xx, P_xy, P_yy, P_zz} / T0, the exact solution of the linear law above
 /// (Runge-Kutta of order 4 in steps of at most 1e-3 mean collision times: error < 1e-12).

@@ -46,6 +46,16 @@ struct Config {
   /// as the gas cools. The default 1e-5 is ~2e-5 of the initial mean free time at packing
   /// 0.1 in 3D and ~4e-4 of it at packing 0.5. Unused while the restitution is 1.
   double tc_time = 1e-5;
+  /// Uniform shear flow (lees_edwards.hpp): shear rate a >= 0 per mean collision time of
+  /// the ideal gas at the start (1 / nu0, nu0 = D 2^D eta sqrt(kT0 / pi), the Boltzmann
+  /// collision frequency at the packing and the temperature kT0 after the start; 0: none).
+  /// Lees–Edwards boundaries slide along x (axis 0) with the gradient along y (axis 1);
+  /// D >= 2 and at least 4 cells per side. The flow starts at t = 0 of the run.
+  double shear_rate = 0.0;
+  /// Isokinetic thermostat of the sheared gas: the interval, in mean collision times of the
+  /// ideal gas (as shear_rate), between rescalings of the peculiar velocities to kT0
+  /// (lees_edwards.hpp); 0: none (the gas heats). Elastic gases only.
+  double thermostat_interval = 0.0;
 };
 
 }  // namespace hypergas::edmd

@@ -44,6 +44,7 @@
 #include "hypergas/edmd/compression.hpp"
 #include "hypergas/edmd/config.hpp"
 #include "hypergas/edmd/events.hpp"
+#include "hypergas/edmd/lees_edwards.hpp"
 #include "hypergas/edmd/observables.hpp"
 #include "hypergas/edmd/prediction.hpp"
 #include "hypergas/edmd/restitution.hpp"
@@ -125,6 +126,9 @@ class Engine {
   /// starts the TC clocks afresh: no particle counts as having collided before.
   double set_restitution(double alpha) {
     check_restitution(alpha);
+    if (alpha < 1.0 && le_.interval > 0.0)
+      throw InvalidInput("the isokinetic thermostat holds an elastic gas; restitution " +
+                         std::to_string(alpha) + " < 1 reaches its own steady state");
     const double old = alpha_;
     if (alpha < 1.0 && (old == 1.0 || s_.t_last.size() != size()))
       s_.t_last.assign(size(), -never);
@@ -140,6 +144,15 @@ class Engine {
   }
   /// Collisions the TC rule made elastic since the start (counted while alpha < 1).
   std::uint64_t tc_elastic_collisions() const { return s_.ntc; }
+
+  // ---- uniform shear flow (lees_edwards.hpp) -------------------------------------------
+  /// Shear rate per ideal-gas mean collision time at the start (Config::shear_rate; 0: none).
+  double shear_rate() const { return le_.on() ? le_.rate / le_.nu0 : 0.0; }
+  /// The Lees–Edwards frame and the exact stress sums (integrated to their last update).
+  const LeesEdwards<D>& lees_edwards() const { return le_; }
+  /// The largest relative deviation from the energy balance E(t) = E(0) - a (int K_xy dt +
+  /// W_yx) - (thermostat) seen at an observation (round-off: ~1e-12).
+  double energy_balance_residual() const { return le_.residual; }
 
  private:
   /// Processes the events due at or before t and before `sample` (an event at the instant
@@ -277,7 +290,9 @@ class Engine {
   /// Largest diameter scale the current cells allow (State::max_scale_for_cells).
   double max_scale_for_cells() const { return s_.max_scale_for_cells(shell()); }
   /// Checks all pairs (O(N^2)); throws std::logic_error naming an overlapping pair.
-  void check_overlaps() const { s_.check_overlaps(); }
+  void check_overlaps() const {
+    s_.check_overlaps(le_.on(), le_.on() ? le_.delta(s_.now) : 0.0);
+  }
 
  private:
   using Scanner = typename Scan::template Scanner<D, F>;
@@ -300,6 +315,10 @@ class Engine {
   /// SlabScan, keeping the earliest pair events if they beat `top`).
   void scan(std::uint32_t i, int axis, int dir, Top2 top) {
     const double sc = s_.diameter_scale();
+    if (le_.on()) [[unlikely]] {  // every prediction scans the whole sliding stencil
+      scan_sheared(s_, le_, i, sc);
+      return;
+    }
     if (s_.cells.per_side() == 1) {
       scan_small_box(s_, i, sc);
       return;
@@ -343,6 +362,26 @@ class Engine {
   /// Moves i into the next cell along its crossing (or renews its list) and predicts again.
   void cross(std::uint32_t i);
 
+  // ---- the sheared gas (lees_edwards.hpp; engine_shear.hpp) ------------------------------
+  /// Starts the flow at now: the streaming velocity added, the sums set, events predicted.
+  void start_shear();
+  /// run_until under Lees–Edwards boundaries: events, shifts, thermostat and samples in
+  /// time order.
+  void run_sheared(double t, Observer* obs, double every);
+  /// The collision of i and j (Engine::collide) in the sliding frame, with the stress sums.
+  [[gnu::noinline]] void collide_sheared(std::uint32_t i, std::uint32_t j);
+  /// After i crossed the top (sgn = -1) or bottom (+1) face: its x moved by sgn delta, its
+  /// velocity by sgn U; c[0] its new column.
+  void slide(std::uint32_t i, std::array<int, D>& c, int sgn);
+  /// wrap() in the sliding frame.
+  void wrap_sheared(std::uint32_t i);
+  /// The column offset moves on: the top and bottom rows scan again.
+  void shear_shift(double ts);
+  /// Rescales the peculiar velocities (isokinetic thermostat) and predicts every event.
+  void thermostat_step(double th);
+  /// sum m c c^T at time t (>= every local clock).
+  typename LeesEdwards<D>::Mat kinetic_tensor(double t) const;
+
   /// Renumbers the particles in Z-order of their cells, so that a scan's neighbours lie
   /// near each other in memory (at N = 256000 the state is larger than the caches, and a
   /// random numbering makes nearly every neighbour a cache miss). A pure permutation of
@@ -360,8 +399,15 @@ class Engine {
   /// Observes the state at time ts (>= every local clock) in the original numbering
   /// (snapshot.hpp).
   void sample(double ts, Observer& obs) const {
+    if (le_.on()) [[unlikely]] {
+      sample_sheared(ts, obs);
+      return;
+    }
     observe_state(s_, ts, obs, &contacts_, &win_);
   }
+  /// sample() of the sheared gas: the energy balance checked, peculiar velocities and the
+  /// stress sums at ts.
+  void sample_sheared(double ts, Observer& obs) const;
 
   ScanState<D, F> s_;        // particles, events, cells, clock, counters (state.hpp) and
                              // the scratch of the scans (prediction.hpp)
@@ -374,6 +420,8 @@ class Engine {
   double alpha_ = 1.0;  // restitution in effect (1 while compressing the start)
   double tc_ = 0.0;     // TC model's t_c
   mutable tally::ContactSlot contacts_;  // the Helfand tally, if a recorder installed one
+  mutable LeesEdwards<D> le_;  // the shear flow (lees_edwards.hpp); off unless shear_rate > 0
+                               // (mutable: an observation records the energy balance)
 };
 
 // The members that start, save and run the gas, defined out of the class: not inline, so
@@ -408,6 +456,7 @@ void Engine<D, F, Scan>::begin() {
   }
   tc_ = cfg_.tc_time;
   set_restitution(cfg_.restitution);
+  if (cfg_.shear_rate != 0.0 || cfg_.thermostat_interval != 0.0) start_shear();
   reset_observables();
 }
 
@@ -422,7 +471,7 @@ template <class Archive>
 void Engine<D, F, Scan>::io(Archive& a) {
   a.tag(identity());
   a(static_cast<State<D, F>&>(s_), scanner_, q_, win_, reorder_every_, next_reorder_, cfg_,
-    alpha_, tc_);
+    alpha_, tc_, le_);
 }
 
 template <int D, Features F, class Scan>
@@ -434,6 +483,10 @@ void Engine<D, F, Scan>::run_until(double t, Observer* obs, double every) {
   if (!(t >= s_.now))
     throw InvalidInput("run_until(" + std::to_string(t) + "): the gas is already at t = " +
                        std::to_string(s_.now));
+  if (le_.on()) [[unlikely]] {
+    run_sheared(t, obs, every);
+    return;
+  }
   const Schedule plan = obs ? Schedule::make(s_.now, t, every) : Schedule{};
   std::uint64_t k = 0;
   double next_sample = obs ? plan.time(0) : never;
@@ -462,6 +515,14 @@ void Engine<D, F, Scan>::observe(Observer& obs) const {
 
 template <int D, Features F, class Scan>
 void Engine<D, F, Scan>::step() {
+  if (le_.on()) [[unlikely]] {  // shifts and rescalings due first are done first
+    for (;;) {
+      const double te = q_.top_time(), ts = le_.next_shift(), th = le_.next_thermostat;
+      if (ts < te && ts <= th) shear_shift(ts);
+      else if (th < te) thermostat_step(th);
+      else break;
+    }
+  }
   if (contacts_.helfand) {
     refuse_tally_if_granular();
     step_event<true>();
@@ -473,3 +534,4 @@ void Engine<D, F, Scan>::step() {
 }  // namespace hypergas::edmd
 
 #include "hypergas/edmd/engine_events.hpp"  // the event kernel's member definitions
+#include "hypergas/edmd/engine_shear.hpp"   // the sheared gas's member definitions

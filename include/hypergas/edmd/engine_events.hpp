@@ -57,7 +57,10 @@ inline void Engine<D, F, Scan>::step_event() {
 template <int D, Features F, class Scan>
 inline void Engine<D, F, Scan>::rebuild() {
   const std::size_t n = size();
-  for (std::uint32_t i = 0; i < n; ++i) s_.wrap(i);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (le_.on()) [[unlikely]] wrap_sheared(i);
+    else s_.wrap(i);
+  }
   s_.build_cells(Scanner::cells_per_particle, shell());
   scanner_.rebuilt(s_);
   std::vector<double> keys(n);
@@ -89,6 +92,10 @@ inline void Engine<D, F, Scan>::look_ahead() {
 template <int D, Features F, class Scan>
 template <bool Record>
 inline void Engine<D, F, Scan>::collide(std::uint32_t i, std::uint32_t j) {
+  if (le_.on()) [[unlikely]] {
+    collide_sheared(i, j);
+    return;
+  }
   State<D, F>& s = s_;
   s.advance(i);
   s.advance(j);
@@ -141,8 +148,10 @@ inline void Engine<D, F, Scan>::cross(std::uint32_t i) {
   c[k] += dir;
   if (c[k] == m) {
     c[k] = 0, x[k] = 0.0, ++s.image[i * D + k];
+    if (k == 1 && le_.on()) [[unlikely]] slide(i, c, -1);  // Lees–Edwards: the top face
   } else if (c[k] < 0) {
     c[k] = m - 1, x[k] = s.L, --s.image[i * D + k];
+    if (k == 1 && le_.on()) [[unlikely]] slide(i, c, 1);
   } else {
     x[k] = (dir > 0 ? c[k] : c[k] + 1) * w;
   }
@@ -152,7 +161,7 @@ inline void Engine<D, F, Scan>::cross(std::uint32_t i) {
   scanner_.left_cell(s, left);  // FilteredScan: the new cell's box follows i's scan below
   Ev& e = s.ev[i];
   // SlabScan keeps the still-valid pair events and scans only the newly adjacent slab
-  const bool keep = Scanner::keeps_pairs_on_crossing && m >= 3 && e.valid(s.cnt);
+  const bool keep = Scanner::keeps_pairs_on_crossing && m >= 3 && e.valid(s.cnt) && !le_.on();
   if (keep) {
     Top2 top{e.t_pair - s.now, e.t_pair2 - s.now, e.partner, e.partner2};
     if (top.p2 >= 0 && s.cnt[top.p2] != e.pcount2) top.t2 = never, top.p2 = -1;

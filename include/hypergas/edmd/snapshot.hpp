@@ -22,6 +22,17 @@
 
 namespace hypergas::edmd {
 
+/// What a snapshot of a sheared gas adds (Engine::sample_sheared): the stress sums
+/// (Snapshot::stress_integral, kinetic_stress), the temperature at the start, the time in
+/// ideal-gas mean collision times, and the flow u = rate (y - L/2) e_x that the velocities
+/// lose to become peculiar.
+struct ShearView {
+  const double* stress_integral;
+  const double* kinetic_integral;
+  const double* kinetic_stress;
+  double kT0, real_time, rate, L;
+};
+
 /// Calls obs with the state `s` at time ts (>= every local clock), in the original
 /// numbering (State::slot), positions unwrapped by the periodic image counts: the first
 /// obs.particles_read() particles (all by default). Changes
@@ -29,7 +40,8 @@ namespace hypergas::edmd {
 template <int D, Features F>
 void observe_state(const State<D, F>& s, double ts, Observer& obs,
                    tally::ContactSlot* contacts = nullptr,
-                   const MeasurementWindow* window = nullptr) {
+                   const MeasurementWindow* window = nullptr,
+                   const ShearView* shear = nullptr) {
   const std::size_t n = std::min(s.size(), obs.particles_read());
   constexpr int st = 2 * D;
   std::vector<double> rec(n * st);
@@ -39,6 +51,10 @@ void observe_state(const State<D, F>& s, double ts, Observer& obs,
       rec[a * st + k] = s.p.position(i)[k] + s.p.velocity(i)[k] * (ts - s.p.local_time(i)) +
                         s.L * s.image[i * D + k];
       rec[a * st + D + k] = s.p.velocity(i)[k];
+    }
+    if (shear) {  // peculiar velocity: the flow at the particle's height in the box
+      const double y = s.p.position(i)[1] + s.p.velocity(i)[1] * (ts - s.p.local_time(i));
+      rec[a * st + D] -= shear->rate * (y - 0.5 * shear->L);
     }
   }
   Snapshot snap;
@@ -54,6 +70,13 @@ void observe_state(const State<D, F>& s, double ts, Observer& obs,
     snap.window_start = window->t0;
     snap.window_virial = window->virial;
     snap.window_collisions = window->collisions(s.ncoll);
+  }
+  if (shear) {
+    snap.stress_integral = shear->stress_integral;
+    snap.kinetic_integral = shear->kinetic_integral;
+    snap.kinetic_stress = shear->kinetic_stress;
+    snap.shear_kT0 = shear->kT0;
+    snap.real_time = shear->real_time;
   }
   snap.collisions = s.ncoll;
   snap.collisions_per_particle =

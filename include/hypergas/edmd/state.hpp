@@ -228,13 +228,21 @@ struct State {
   double max_scale_for_cells(double extra = 0.0) const {
     return (cells.per_side() == 1 ? 0.5 * L : cells.width() - extra) / max_base;
   }
-  /// Checks all pairs (O(N^2)); throws std::logic_error naming an overlapping pair.
-  void check_overlaps() const {
+  /// Checks all pairs (O(N^2)); throws std::logic_error naming an overlapping pair. With
+  /// `sheared`, the images above the box are displaced by `delta` along x (Lees–Edwards,
+  /// lees_edwards.hpp).
+  void check_overlaps(bool sheared = false, double delta = 0.0) const {
     const double tol = 1e-9;
     for (std::size_t i = 0; i < size(); ++i) {
       const Vec<D> xi = pos_now(i);
       for (std::size_t j = i + 1; j < size(); ++j) {
         Vec<D> r = xi - pos_now(j);
+        if (D >= 2 && sheared) {
+          constexpr int y = D >= 2 ? 1 : 0;
+          const double f = std::round(r[y] / L);
+          r[y] -= f * L;
+          r[0] -= f * delta;
+        }
         for (int k = 0; k < D; ++k) r[k] -= L * std::round(r[k] / L);
         const double s = contact(i, j);
         if (r.squaredNorm() < s * s * (1.0 - tol))

@@ -8,6 +8,12 @@
 // time at T0, a_m the collision model's rate exponent), then P_ij / p for i <= j, each
 // followed by its standard error over the particles (P_xx, P_xx_err, P_xy, P_xy_err, ...;
 // axes x, y, z, u, v, w). P = sum m v v^T / (N - 1), p = tr P / D.
+//
+// A sheared EDMD gas (Snapshot::stress_integral set) gives the exact pressure tensor,
+// kinetic and collisional, averaged over the interval since the previous snapshot (the
+// first row: the kinetic part at that instant); its `_err` columns are NaN, written empty
+// (the summary's block errors are the errors); T is the kinetic temperature averaged over
+// the same interval and T0 the engine's Snapshot::shear_kT0.
 #pragma once
 
 #include <cstddef>
@@ -35,13 +41,18 @@ class PressureTensorRecorder final : public Observer {
   template <class Archive>
   void io(Archive& ar) {
     ar.tag("pressure-tensor");
-    ar(have_t0_, ln_t0_, rows_);
+    ar(have_t0_, ln_t0_, rows_, have_prev_, prev_time_, prev_);
   }
 
  private:
   int dim_;
   double rate_, exponent_;
+  void observe_integral(const Snapshot& s);
+
   bool have_t0_ = false;
+  bool have_prev_ = false;    // EDMD: the stress integral of the previous snapshot
+  double prev_time_ = 0.0;
+  std::vector<double> prev_;
   double ln_t0_ = 0.0;
   std::vector<std::vector<double>> rows_;
 };

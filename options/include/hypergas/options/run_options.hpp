@@ -31,8 +31,8 @@ struct RunOptions {
   double restitution = 1.0;    ///< coefficient of normal restitution alpha
   std::string drive;           ///< DSMC energy input: "none" or "white-noise"
   double drive_dt = 0.0;       ///< DSMC: interval between white-noise kicks
-  double shear_rate = 0.0;     ///< DSMC uniform shear flow u_x = a y: a (0: none)
-  std::string thermostat;      ///< DSMC sheared gas: "none" or "isokinetic"
+  double shear_rate = 0.0;     ///< uniform shear flow u_x = a y: a (0: none)
+  std::string thermostat;      ///< sheared gas: "none" or "isokinetic"
   std::string scheme;          ///< DSMC time scheme (registry::schemes)
   double dt = 0.0;             ///< DSMC NTC time step
   long long lane_size = 0;     ///< DSMC lanes scheme: particles per lane (0: the default)
@@ -87,6 +87,9 @@ inline constexpr double transport_warmup = 20.0;
 /// The engine configurations that valid options describe.
 dsmc::Config dsmc_config(const RunOptions& o);
 edmd::Config edmd_config(const RunOptions& o);
+/// The EDMD isokinetic thermostat's interval under --thermostat isokinetic, in ideal-gas mean
+/// collision times (edmd::Config::thermostat_interval).
+inline constexpr double edmd_thermostat_interval = 0.1;
 /// Whether the run has two species (mass_ratio != 1): the engines' Features::species.
 bool two_species(const RunOptions& o);
 /// The engine valid options name, for registry::with_engine (hypergas/engines.hpp): engine,

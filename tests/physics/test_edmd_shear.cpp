@@ -64,19 +64,20 @@ TEST_CASE("Lees-Edwards face: a pair meeting through the face collides once", "[
   // 2D box of side 12 (8 cells per side): particle 0 at height L - 0.7 - s moving up,
   // particle 1 at 0.7 + s moving down; they meet only as images across the y face, where
   // the image of 1 above is at x1 + delta(t) + (v1x + U) t. Cases: s = 0 with the image
-  // straight above (contact at delta ~ 0.2, column offset k = 0) and beside it, and s = 1.5
-  // with x1 aimed so that they meet at t ~ 1.7, after delta passed a cell width (k = 1).
+  // straight above (contact at delta ~ 0.2, column offset k = 0) and beside it, and s = 2
+  // with x1 aimed so that they meet at t ~ 2.2, after delta passed a cell width (k = 1).
   const double L = 12.0;
   struct Case {
     double s, aim;
   };
-  for (const Case cs : {Case{0.0, 0.0}, Case{0.0, 0.3}, Case{1.5, 0.2}}) {
+  for (const Case cs : {Case{0.0, 0.0}, Case{0.0, 0.3}, Case{2.0, 0.2}}) {
     const double y0 = L - 0.7 - cs.s, y1 = 0.7 + cs.s, gap = y1 + L - y0;
     Config c;
     c.n = 2;
     c.packing = packing_fraction(2, 2, L);
     c.shear_rate = 2.0;
-    const double rate = c.shear_rate * ideal_collision_frequency(2, c.packing, 1.0);
+    // the unit: the ideal-gas collision frequency at the start's kT0 = (1 + 1) / (D N) = 0.5
+    const double rate = c.shear_rate * ideal_collision_frequency(2, c.packing, 0.5);
     // relative x velocity of the image: v1x + a L - v0x = a (y1 - y0 + L)
     const double ux = rate * gap;
     const double dx0 = cs.s > 0.0 ? cs.aim - ux * (cs.s + 0.2) : cs.aim;

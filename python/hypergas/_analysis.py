@@ -38,6 +38,9 @@ PressureTensorRecorder(dim, shear_rate=0.0, model="hs", vhs_exponent=0.5): colum
 real_time, temperature_ratio (T/T0, T0 of the first observation), reduced_shear_rate
 (shear_rate per mean collision time at the current T), then P_ij/p for i <= j, each with
 its standard error over the particles (P_xx, P_xx_err, P_xy, ...; axes x, y, z, u, v, w).
+From a sheared EDMD gas the rows are the exact kinetic + collisional tensor averaged over
+each interval between observations, with the interval's mean temperature and T0 that of
+the start; their errors are NaN (model="hs").
 ``columns``, ``rows`` (an (observations, columns) array) and ``table()`` (a dict of
 columns). Feed it with ``engine.run(..., observers=[rec])`` or ``engine.observe(rec)``.
 """

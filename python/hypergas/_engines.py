@@ -295,6 +295,9 @@ class EDMD(_Engine):
     The engine renumbers particles by position from time to time (memory locality):
     ``velocities`` and ``positions`` rows are in memory order, ``ids[i]`` is the original
     number of row i (``np.argsort(ids)`` orders rows by particle).
+    With ``shear_rate`` (per ideal-gas mean collision time) the box has Lees-Edwards
+    sliding boundaries and ``velocities`` are those of the lab frame, the flow
+    a (y - L/2) included; observers see the peculiar ones.
     """
 
     _kind = "edmd"

@@ -116,7 +116,8 @@ RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
       {"vacancies", vacancies},
   };
   if (sheared) {
-    // the exact balance E(t) = E(0) - a V int P_xy dt (- thermostat), largest deviation
+    // the exact balance E(t) = E(0) - a V int P_xy dt (- thermostat, - inelastic loss):
+    // its largest deviation
     keys.emplace_back("energy_balance_residual", engine.energy_balance_residual());
     keys.emplace_back("ideal_collision_rate", engine.lees_edwards().nu0);
   }

@@ -55,8 +55,7 @@ void PressureTensorRecorder::observe(const Snapshot& s) {
     have_t0_ = true;
   }
   const double t_ratio = std::exp(ln_t - ln_t0_);
-  std::vector<double> row{s.time, std::isnan(s.real_time) ? s.time : s.real_time, t_ratio,
-                          rate_ * std::pow(t_ratio, -0.5 * exponent_)};
+  std::vector<double> row = row_head(s, t_ratio);
   const double nn = static_cast<double>(n);
   for (int a = 0; a < D; ++a)
     for (int b = a; b < D; ++b) {
@@ -66,6 +65,11 @@ void PressureTensorRecorder::observe(const Snapshot& s) {
       row.push_back(std::sqrt(var * nn) / nm1 / kT);
     }
   rows_.push_back(std::move(row));
+}
+
+std::vector<double> PressureTensorRecorder::row_head(const Snapshot& s, double t_ratio) const {
+  return {s.time, std::isnan(s.real_time) ? s.time : s.real_time, t_ratio,
+          rate_ * std::pow(t_ratio, -0.5 * exponent_)};
 }
 
 void PressureTensorRecorder::observe_integral(const Snapshot& s) {
@@ -93,8 +97,7 @@ void PressureTensorRecorder::observe_integral(const Snapshot& s) {
     have_t0_ = true;
   }
   const double t_ratio = std::exp(std::log(kT) - ln_t0_);
-  std::vector<double> row{s.time, std::isnan(s.real_time) ? s.time : s.real_time, t_ratio,
-                          rate_ * std::pow(t_ratio, -0.5 * exponent_)};
+  std::vector<double> row = row_head(s, t_ratio);
   double tr = 0.0;
   for (int a = 0; a < D; ++a) tr += P[a * D + a];
   const double p = tr / D;

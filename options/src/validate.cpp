@@ -162,7 +162,7 @@ void validate_granular(const RunOptions& o) {
     reject("--structure measures the elastic fluid at equilibrium: leave out --restitution");
 }
 
-/// --shear-rate and --thermostat (dsmc/shear.hpp).
+/// --shear-rate and --thermostat (dsmc/shear.hpp, edmd/lees_edwards.hpp).
 void validate_shear(const RunOptions& o) {
   const bool edmd = o.engine_kind() == registry::EngineKind::edmd;
   const bool sheared = o.shear_rate != 0.0;

@@ -2,18 +2,19 @@
 // edmd/lees_edwards.hpp): pressure_tensor.csv and the steady state's summary keys.
 //
 // EDMD rows hold the exact pressure tensor, kinetic and collisional, averaged over each
-// sampling interval (their _err columns are NaN, written empty), with the interval's mean kinetic
-// temperature; real_time is in ideal-gas mean collision times at T0, and viscosity_ratio is
-// against the Boltzmann gas's first Sonine value (the dense gas's own differs by the Enskog
-// terms, O(packing)).
+// sampling interval (their _err columns are NaN, written empty), with the interval's mean
+// kinetic temperature; real_time is in ideal-gas mean collision times at T0, and
+// viscosity_ratio is against the Boltzmann gas's first Sonine value (the dense gas's own
+// differs by the Enskog terms, O(packing)).
 //
-// pressure_tensor.csv (analysis/pressure_tensor_recorder.hpp), one row per sampling instant: time, real_time (mean collision times
-// at the initial temperature T0), temperature_ratio T/T0, reduced_shear_rate (a per mean
-// collision time at the current T: a (T/T0)^(-a_m/2), a_m the model's rate exponent), then
-// each component P_ij / p for i <= j followed by its standard error over the particles
-// (P_xx, P_xx_err, P_xy, P_xy_err, ...; axes x, y, z, u, v, w; the flow is along x, its
-// gradient along y). P = sum m V V^T / (N - 1) and p = tr P / D = kT, the engine's
-// temperature; V are the peculiar velocities (those of the frame moving with the flow).
+// pressure_tensor.csv (analysis/pressure_tensor_recorder.hpp), one row per sampling
+// instant: time, real_time (mean collision times at the initial temperature T0),
+// temperature_ratio T/T0, reduced_shear_rate (a per mean collision time at the current T:
+// a (T/T0)^(-a_m/2), a_m the model's rate exponent), then each component P_ij / p for
+// i <= j followed by its standard error over the particles (P_xx, P_xx_err, P_xy,
+// P_xy_err, ...; axes x, y, z, u, v, w; the flow is along x, its gradient along y).
+// P = sum m V V^T / (N - 1) and p = tr P / D = kT, the engine's temperature; V are the
+// peculiar velocities (those of the frame moving with the flow).
 //
 // Summary keys, from the steady state: the rows of the second half of the run
 // (time >= until / 2), their means and standard errors from 10 blocks (blocks longer than
@@ -149,10 +150,7 @@ class ShearOutput final : public Output {
 namespace outputs {
 extern const OutputKind shear{
     "shear",
-    [](const RunOptions& o, registry::EngineKind e) {
-      (void)e;
-      return o.shear_rate != 0.0;
-    },
+    [](const RunOptions& o, registry::EngineKind) { return o.shear_rate != 0.0; },
     make_output<ShearOutput>};
 }
 

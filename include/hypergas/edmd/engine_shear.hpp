@@ -91,11 +91,23 @@ void Engine<D, F, Scan>::run_sheared(double t, Observer* obs, double every) {
       continue;
     }
     if (std::min({te, ts, th}) > t) break;
-    if (te <= ts && te <= th) step_event<false>();
-    else if (ts <= th) shear_shift(ts);
-    else thermostat_step(th);
+    if (!frame_step_before(te)) step_event<false>();
   }
   s_.now = t;
+}
+
+template <int D, Features F, class Scan>
+bool Engine<D, F, Scan>::frame_step_before(double te) {
+  const double ts = le_.next_shift(), th = le_.next_thermostat;
+  if (ts < te && ts <= th) {
+    shear_shift(ts);
+    return true;
+  }
+  if (th < te) {
+    thermostat_step(th);
+    return true;
+  }
+  return false;
 }
 
 template <int D, Features F, class Scan>
@@ -194,16 +206,17 @@ void Engine<D, F, Scan>::collide_sheared(std::uint32_t i, std::uint32_t j) {
 }
 
 template <int D, Features F, class Scan>
+void Engine<D, F, Scan>::through_face(std::uint32_t i, int sgn) {
+  s_.p.position(i)[0] += sgn * le_.delta(s_.now);
+  s_.p.velocity(i)[0] += sgn * le_.velocity();
+}
+
+template <int D, Features F, class Scan>
 void Engine<D, F, Scan>::slide(std::uint32_t i, std::array<int, D>& c, int sgn) {
-  State<D, F>& s = s_;
-  auto x = s.p.position(i);
-  x[0] += sgn * le_.delta(s.now);
-  const double f = std::floor(x[0] / s.L);
-  if (f != 0.0) x[0] -= f * s.L, s.image[i * D] += static_cast<std::int32_t>(f);
-  if (x[0] >= s.L) x[0] -= s.L, ++s.image[i * D];
-  s.p.velocity(i)[0] += sgn * le_.velocity();
-  c[0] = s.cells.coord(x[0]);
-  ++s.cnt[i];  // its partners' events are predicted again (lees_edwards.hpp)
+  through_face(i, sgn);
+  s_.wrap_axis(i, 0);
+  c[0] = s_.cells.coord(s_.p.position(i)[0]);
+  ++s_.cnt[i];  // its partners' events are predicted again (lees_edwards.hpp)
 }
 
 template <int D, Features F, class Scan>
@@ -214,11 +227,11 @@ void Engine<D, F, Scan>::wrap_sheared(std::uint32_t i) {
   auto x = s.p.position(i);
   while (x[Y] >= s.L) {
     x[Y] -= s.L, ++s.image[i * D + Y];
-    x[0] -= le_.delta(s.now), s.p.velocity(i)[0] -= le_.velocity();
+    through_face(i, -1);
   }
   while (x[Y] < 0.0) {
     x[Y] += s.L, --s.image[i * D + Y];
-    x[0] += le_.delta(s.now), s.p.velocity(i)[0] += le_.velocity();
+    through_face(i, 1);
   }
   if (x[Y] >= s.L) x[Y] = 0.0;  // -tiny + L rounds to L
   s.wrap(i);  // the other axes
@@ -241,7 +254,7 @@ void Engine<D, F, Scan>::sample_sheared(double ts, Observer& obs) const {
       Ki[a * D + b] = le.Kint(a, b);
       Kr[a * D + b] = K(a, b);
     }
-  const ShearView view{S.data(), Ki.data(), Kr.data(), le.kT0, ts * le.nu0, le.rate, le.L};
+  const ShearView<D> view{S.data(), Ki.data(), Kr.data(), ts * le.nu0, &le};
   observe_state(s_, ts, obs, nullptr, &win_, &view);
 }
 

@@ -72,7 +72,9 @@ struct LeesEdwards {
   double E0 = 0.0;          ///< tr K / 2 at t_start
   double removed = 0.0;     ///< energy the thermostat removed
   double dissipated = 0.0;  ///< energy inelastic collisions took (restitution < 1)
-  double residual = 0.0;    ///< largest |energy balance| / E seen at an observation
+  /// largest |energy balance| / E seen at an observation (mutable: a const observation
+  /// records it)
+  mutable double residual = 0.0;
 
   bool on() const { return rate != 0.0; }
   double velocity() const { return rate * L; }  ///< U: speed of the images above

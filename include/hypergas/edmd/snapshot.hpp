@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "hypergas/edmd/lees_edwards.hpp"
 #include "hypergas/edmd/observables.hpp"
 #include "hypergas/edmd/state.hpp"
 #include "hypergas/observer.hpp"
@@ -23,14 +24,16 @@
 namespace hypergas::edmd {
 
 /// What a snapshot of a sheared gas adds (Engine::sample_sheared): the stress sums
-/// (Snapshot::stress_integral, kinetic_stress), the temperature at the start, the time in
-/// ideal-gas mean collision times, and the flow u = rate (y - L/2) e_x that the velocities
-/// lose to become peculiar.
+/// (Snapshot::stress_integral, kinetic_integral, kinetic_stress), the time in ideal-gas mean
+/// collision times, and the flow (its kT0, and the velocity LeesEdwards::stream that the
+/// velocities lose to become peculiar).
+template <int D>
 struct ShearView {
   const double* stress_integral;
   const double* kinetic_integral;
   const double* kinetic_stress;
-  double kT0, real_time, rate, L;
+  double real_time;
+  const LeesEdwards<D>* flow;
 };
 
 /// Calls obs with the state `s` at time ts (>= every local clock), in the original
@@ -41,7 +44,7 @@ template <int D, Features F>
 void observe_state(const State<D, F>& s, double ts, Observer& obs,
                    tally::ContactSlot* contacts = nullptr,
                    const MeasurementWindow* window = nullptr,
-                   const ShearView* shear = nullptr) {
+                   const ShearView<D>* shear = nullptr) {
   const std::size_t n = std::min(s.size(), obs.particles_read());
   constexpr int st = 2 * D;
   std::vector<double> rec(n * st);
@@ -53,8 +56,9 @@ void observe_state(const State<D, F>& s, double ts, Observer& obs,
       rec[a * st + D + k] = s.p.velocity(i)[k];
     }
     if (shear) {  // peculiar velocity: the flow at the particle's height in the box
-      const double y = s.p.position(i)[1] + s.p.velocity(i)[1] * (ts - s.p.local_time(i));
-      rec[a * st + D] -= shear->rate * (y - 0.5 * shear->L);
+      constexpr int y = LeesEdwards<D>::y;
+      rec[a * st + D] -= shear->flow->stream(s.p.position(i)[y] +
+                                             s.p.velocity(i)[y] * (ts - s.p.local_time(i)));
     }
   }
   Snapshot snap;
@@ -75,7 +79,7 @@ void observe_state(const State<D, F>& s, double ts, Observer& obs,
     snap.stress_integral = shear->stress_integral;
     snap.kinetic_integral = shear->kinetic_integral;
     snap.kinetic_stress = shear->kinetic_stress;
-    snap.shear_kT0 = shear->kT0;
+    snap.shear_kT0 = shear->flow->kT0;
     snap.real_time = shear->real_time;
   }
   snap.collisions = s.ncoll;

@@ -158,17 +158,19 @@ struct State {
   /// Brings particle i to now and into the box [0, L)^D, counting the images it left.
   void wrap(std::uint32_t i) {
     advance(i);
+    for (int k = 0; k < D; ++k) wrap_axis(i, k);
+  }
+  /// Brings coordinate k of i's record into [0, L), counting the images it left.
+  void wrap_axis(std::uint32_t i, int k) {
     auto x = p.position(i);
-    for (int k = 0; k < D; ++k) {
-      const double f = std::floor(x[k] / L);
-      if (f != 0.0) {
-        x[k] -= f * L;
-        image[i * D + k] += static_cast<std::int32_t>(f);
-      }
-      if (x[k] >= L) {  // -tiny wraps to L by round-off
-        x[k] -= L;
-        ++image[i * D + k];
-      }
+    const double f = std::floor(x[k] / L);
+    if (f != 0.0) {
+      x[k] -= f * L;
+      image[i * D + k] += static_cast<std::int32_t>(f);
+    }
+    if (x[k] >= L) {  // -tiny wraps to L by round-off
+      x[k] -= L;
+      ++image[i * D + k];
     }
   }
   /// Builds the cell grid for the current diameters (at most `per_particle` cells per

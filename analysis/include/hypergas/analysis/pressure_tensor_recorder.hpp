@@ -48,6 +48,8 @@ class PressureTensorRecorder final : public Observer {
   int dim_;
   double rate_, exponent_;
   void observe_integral(const Snapshot& s);
+  /// A row's first four columns: time, real_time, temperature_ratio, reduced_shear_rate.
+  std::vector<double> row_head(const Snapshot& s, double t_ratio) const;
 
   bool have_t0_ = false;
   bool have_prev_ = false;    // EDMD: the stress integral of the previous snapshot

@@ -1,5 +1,6 @@
 // The DSMC parts of the work-precision study (report.hpp): the statistical error at
-// equilibrium, the finite-N bias, the Maxwell-molecule rate and the NTC step bias.
+// equilibrium, the finite-N bias, the Maxwell-molecule rate, the NTC step bias, the lanes
+// scheme's bias and the choice of scheme.
 //
 // Exact finite-N equilibrium. At zero momentum and fixed energy the equilibrium of the
 // Kac process is uniform on the energy sphere in the n = D (N - 1) dimensional space of
@@ -8,7 +9,9 @@
 // D (N - 1) kT, and E|P z|^4 = R^4 D (D + 2) / (n (n + 2)) for a D-dim projection P:
 //   Q_N = D (D + 2) n / (n + 2) (1/N) sum_i (1 - m_i / M)^2,
 // so Q_N / Q_inf - 1 = -(2 + 2/D) / N + O(1/N^2) for equal masses.
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <cstdint>
 #include <cstdio>
 #include <tuple>
@@ -209,11 +212,13 @@ void maxwell_study(const ReportOptions& o, ReportResult& res) {
 }
 
 namespace {
-/// The kurtosis <v^4>/<v^2>^2 at t = 2 from the delta shell, 3D hard spheres, N = 10000,
-/// over Rn replicas of `cfg` (seeds from sd), with the mean thread-CPU seconds per replica.
-std::pair<MeanSe, double> kurtosis_at_2(const ReportOptions& o, int Rn, dsmc::Config cfg,
-                                        std::uint64_t sd) {
-  const std::size_t N = 10000;
+/// The kurtosis <v^4>/<v^2>^2 at t = 2 from the delta shell, 3D hard spheres, N particles,
+/// of each of Rn replicas of `cfg` (seeds from sd), with each replica's thread-CPU seconds
+/// (construction included).
+std::pair<std::vector<double>, std::vector<double>> kurtosis_runs(const ReportOptions& o, int Rn,
+                                                                  dsmc::Config cfg,
+                                                                  std::uint64_t sd,
+                                                                  std::size_t N) {
   std::vector<double> k(Rn), cpu(Rn);
   for_each_replica(Rn, o.threads, [&](int r) {
     dsmc::Config c = cfg;
@@ -230,6 +235,13 @@ std::pair<MeanSe, double> kurtosis_at_2(const ReportOptions& o, int Rn, dsmc::Co
     for (std::size_t i = 0; i < N; ++i) m4 += std::pow(p.velocity(i).squaredNorm() / m2, 2) / N;
     k[r] = m4;
   }, {&k, &cpu});
+  return {k, cpu};
+}
+
+/// kurtosis_runs at N = 10000: the mean kurtosis and the mean CPU seconds per replica.
+std::pair<MeanSe, double> kurtosis_at_2(const ReportOptions& o, int Rn, dsmc::Config cfg,
+                                        std::uint64_t sd) {
+  const auto [k, cpu] = kurtosis_runs(o, Rn, cfg, sd, 10000);
   return {mean_se(k), mean_se(cpu).mean};
 }
 }  // namespace
@@ -270,6 +282,62 @@ void lanes_study(const ReportOptions& o, ReportResult& res) {
     res.lanes.push_back({3, double(m), b / ex.mean, std::hypot(la.se, ex.se) / ex.mean, 0.0});
     res.lanes_run_s.push_back(cpu);
   }
+}
+
+// 6. The choice of scheme: one run's error of the kurtosis at t = 2 against its run time,
+// exact, NTC (dt = 2, 0.5) and lanes at N = 1e4, 1e5, 1e6 (report.hpp, schemes).
+void schemes_study(const ReportOptions& o, ReportResult& res) {
+  struct Case {
+    const char* scheme;
+    dsmc::Scheme s;
+    double dt;
+  };
+  const Case cases[] = {{"exact", dsmc::Scheme::exact, 0.0},
+                        {"ntc", dsmc::Scheme::ntc, 2.0},
+                        {"ntc", dsmc::Scheme::ntc, 0.5},
+                        {"lanes", dsmc::Scheme::lanes, 0.0}};
+  const std::size_t Ns[] = {10000, 100000, 1000000};
+  const int Rs[] = {o.quick ? 16 : 64, o.quick ? 8 : 24, o.quick ? 6 : 12};
+  struct Runs {
+    std::vector<double> k, cpu;
+  };
+  std::vector<Runs> runs;  // [case][N]
+  std::uint64_t sd = o.seed + 5000;
+  for (const Case& c : cases)
+    for (std::size_t j = 0; j < std::size(Ns); ++j) {
+      dsmc::Config cfg;
+      cfg.scheme = c.s;
+      if (c.s == dsmc::Scheme::ntc) cfg.dt = c.dt;
+      auto [k, cpu] = kurtosis_runs(o, Rs[j], cfg, sd += 97, Ns[j]);
+      runs.push_back({std::move(k), std::move(cpu)});
+    }
+  const std::size_t ref_index = std::size(Ns) - 1;  // exact (case 0) at the largest N
+  const MeanSe ref = mean_se(runs[ref_index].k);
+  res.scheme_reference = ref;
+  for (std::size_t c = 0; c < std::size(cases); ++c)
+    for (std::size_t j = 0; j < std::size(Ns); ++j) {
+      const std::size_t idx = c * std::size(Ns) + j;
+      std::vector<double> rel = runs[idx].k;
+      for (double& v : rel) v = v / ref.mean - 1.0;
+      const MeanSe m = mean_se(rel);
+      const double R = static_cast<double>(rel.size());
+      double var = 0;
+      for (double v : rel) var += (v - m.mean) * (v - m.mean);
+      var /= R - 1.0;
+      // The bias and its noise: the point's mean and the reference's (none for the
+      // reference itself, whose bias is 0 by definition).
+      const double ref_se = ref.se / ref.mean;
+      const double se_b2 = idx == ref_index ? 0.0 : m.se * m.se + ref_se * ref_se;
+      const double b = idx == ref_index ? 0.0 : m.mean;
+      const double b2 = std::max(0.0, b * b - se_b2);
+      const double err = std::sqrt(var + b2);
+      const double var_err =
+          (var * var / (2.0 * (R - 1.0)) + (4.0 * b * b * se_b2 + 2.0 * se_b2 * se_b2) / 4.0) /
+          (err * err);
+      res.schemes.push_back({cases[c].scheme, cases[c].dt, static_cast<double>(Ns[j]),
+                             mean_se(runs[idx].cpu).mean, err, std::sqrt(var_err),
+                             static_cast<int>(R)});
+    }
 }
 
 }  // namespace hypergas::studies::detail

@@ -34,5 +34,6 @@ void maxwell_study(const ReportOptions& o, ReportResult& res);
 void ntc_study(const ReportOptions& o, ReportResult& res);
 void lanes_study(const ReportOptions& o, ReportResult& res);
 void eos_study(const ReportOptions& o, ReportResult& res);
+void schemes_study(const ReportOptions& o, ReportResult& res);
 
 }  // namespace hypergas::studies::detail

@@ -23,6 +23,15 @@
 //   lanes       the lanes scheme (dsmc/detail/kac_lanes.hpp), the same kurtosis for lane
 //               sizes M = 8, 64, 512, 4096 (default epoch) minus the exact scheme's, with the
 //               CPU seconds per replica of both, in lanes.csv: its bias and its cost.
+//   schemes     the choice of scheme: the same kurtosis at t = 2 from one run of N = 1e4,
+//               1e5, 1e6 particles for the exact scheme, NTC (dt = 2 and 0.5) and lanes
+//               (default lane size), in schemes.csv. The error of one run is the RMS
+//               deviation of its kurtosis from the reference, the exact scheme's mean at
+//               N = 1e6: sqrt(sd^2 + bias^2), the sd from the runs' scatter and bias^2
+//               estimated without the noise of the two means (b^2 - se_b^2, at least 0).
+//               It counts the finite-N bias with the scheme's. Run time is the CPU
+//               seconds of one run. recommend() picks, for each target error E, the measured
+//               point with error <= E and the least run time (schemes_recommendation).
 //   eos         EDMD, N = 1000, D = 1..4: the reduced pressure Z from the collision virial
 //               over a window of T time units (after the lattice has melted, t = 2), against
 //                 1D rods, eta = 0.5: Tonks' exact Z = 1/(1 - eta) (L. Tonks, Phys. Rev. 50,
@@ -92,6 +101,38 @@ struct BiasRow {
   double param = 0.0, bias = 0.0, bias_se = 0.0, theory = 0.0;
 };
 
+/// One measured point of the scheme comparison (file comment, schemes): `scheme` is "exact",
+/// "ntc" (step dt) or "lanes" (default lane size, dt 0) at n particles; error is the relative
+/// RMS error of one run, error_se its standard error, run_s the CPU seconds of one run.
+struct SchemePoint {
+  std::string scheme;
+  double dt = 0.0, n = 0.0, run_s = 0.0, error = 0.0, error_se = 0.0;
+  int replicas = 0;
+};
+
+/// The scheme to use for a target relative error: the measured point with error <= target
+/// and the least run_s (`found` false when no point reaches the target).
+struct Recommendation {
+  double target = 0.0;
+  bool found = false;
+  SchemePoint point;
+};
+
+/// The target errors the report recommends a scheme for.
+inline constexpr double recommendation_targets[] = {1e-2, 3e-3, 1e-3, 5e-4};
+
+/// recommend(points, target): the Recommendation for one target (ties: the first point).
+Recommendation recommend(const std::vector<SchemePoint>& points, double target);
+
+/// "exact", "ntc dt = 2", "lanes": the name of a point's scheme as the report prints it.
+std::string scheme_label(const SchemePoint& p);
+
+/// One line per target of recommendation_targets: "for relative error E within time T use
+/// <scheme> (N = n; next: <scheme>, T' s at N = n')", the next being the fastest point of
+/// another scheme (NTC steps count as one scheme) that reaches E, or "for relative error E:
+/// no measured run reaches it"; each newline-terminated.
+std::string schemes_recommendation(const std::vector<SchemePoint>& points);
+
 /// Everything the report computes.
 struct ReportResult {
   std::vector<ReportPoint> points;
@@ -102,6 +143,8 @@ struct ReportResult {
   std::vector<double> lanes_run_s;       ///< per lanes row: thread-CPU seconds per replica
   double ntc_order = std::numeric_limits<double>::quiet_NaN();  ///< p in |bias| ~ dt^p
   double ntc_order_se = std::numeric_limits<double>::quiet_NaN();
+  std::vector<SchemePoint> schemes;   ///< schemes: one point per scheme and N
+  analysis::MeanSe scheme_reference;  ///< schemes: the exact kurtosis at t = 2, N = 1e6
   double total_s = 0.0;  ///< wall-clock seconds of the whole study
 };
 
@@ -109,14 +152,15 @@ struct ReportResult {
 /// Throws InvalidInput for bad options.
 ReportResult run_report_study(const ReportOptions& o);
 
-/// Writes work_precision.csv, slopes.csv, finite_n.csv, ntc.csv, slopes.gp and
+/// Writes work_precision.csv, slopes.csv, finite_n.csv, ntc.csv, lanes.csv, schemes.csv,
+/// recommendation.txt, slopes.gp and
 /// plot_report.gp (scripts/plot_report.gp) into `dir` and, with `plot`, runs gnuplot there
 /// (work_precision.png). Each file is written to a temporary name and renamed when
 /// complete. Throws InvalidInput if the folder cannot be created or written.
 void write_report(const ReportResult& res, const std::filesystem::path& dir, bool plot);
 
-/// The summary printed after a report: a table of the slopes and the NTC order, one line
-/// each, newline-terminated.
+/// The summary printed after a report: a table of the slopes, the NTC order (or the dt at
+/// which a bias was detected) and schemes_recommendation, one line each, newline-terminated.
 std::string report_summary(const ReportResult& res);
 
 /// The bench_report entry point: runs the study, writes the files into o.out, prints

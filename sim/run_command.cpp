@@ -8,6 +8,7 @@
 // removes. A run with --checkpoint-every or --checkpoint-wall keeps its final state as
 // final.hgck, one of its files.
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 
 #include <fmt/core.h>
@@ -55,6 +56,13 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume, bool quiet) {
   rec.summary.emplace_back(
       "output_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   const analysis::JsonObject& summary = rec.summary;
+  for (const auto& kv : summary)  // a gas too small for the chi-square test
+    if (kv.first == "chi2_p_speed" && std::isnan(summary_number(summary, kv.first)))
+      fmt::print(stderr,
+                 "hypergas: note: N = {} is too few for the chi-square test of the speeds (it "
+                 "needs 5 expected counts in each of 3 groups): chi2_p_speed is empty in "
+                 "moments.csv and null in summary.json\n",
+                 o.n);
   analysis::write_json(out.staged("summary.json").string(), summary);
   out.commit();
   // The run is complete: its checkpoint would only continue a finished run (and a .tmp left
@@ -69,11 +77,19 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume, bool quiet) {
              f("engine"), f("dim"), f("model"), f("n"), f("seed"), f("collisions"), f("wall_s"),
              f("collisions_per_s"));
   const bool granular = o.restitution != 1.0;
-  fmt::print("  final kurtosis_x {} +- {} (MB 3), KS p-value of speeds {}{}, energy drift {}, "
-             "momentum drift {}\n",
-             f("kurtosis_x"), f("kurtosis_x_error"), f("ks_p_speed"),
-             granular ? " (against MB: a cooling gas is not Maxwellian)" : "",
-             f("energy_rel_drift"), f("momentum_drift"));
+  const char* not_mb = granular ? " (against MB: a cooling gas is not Maxwellian)" : "";
+  if (o.replicas > 1)  // the replicas' mean +- standard error; the files are replica 0's
+    fmt::print("  {} replicas, mean +- se: final kurtosis_x {} +- {} (MB 3), KS p-value of "
+               "speeds {} +- {}{}; largest energy drift {}, momentum drift {}; the files are "
+               "replica 0's\n",
+               o.replicas, f("kurtosis_x_replica_mean"), f("kurtosis_x_replica_se"),
+               f("ks_p_speed_replica_mean"), f("ks_p_speed_replica_se"), not_mb,
+               f("energy_rel_drift"), f("momentum_drift"));
+  else
+    fmt::print("  final kurtosis_x {} +- {} (MB 3), KS p-value of speeds {}{}, energy drift {}, "
+               "momentum drift {}\n",
+               f("kurtosis_x"), f("kurtosis_x_error"), f("ks_p_speed"), not_mb,
+               f("energy_rel_drift"), f("momentum_drift"));
   if (granular) {
     // the measurements of a cooling or driven gas beside first Sonine theory
     std::string g = fmt::format("  restitution {}: a2 {} +- {} (first Sonine {})",

@@ -27,7 +27,8 @@ namespace hypergas::cli::detail {
 /// those of a one-replica run; the replicas run side by side, one per thread, with
 /// --threads 1, else one after another, each on o.threads threads). The outputs are replica
 /// 0's; the other replicas keep their own moments only. The summary adds totals, the
-/// aggregate rate and the replica mean of the final kurtosis with its error.
+/// aggregate rate and the replica means of the final kurtosis and KS p-value with their
+/// standard errors (analysis::mean_se), which `run` prints for K > 1.
 template <class Engine>
 RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
   static_assert(SimulationEngine<Engine>);
@@ -47,7 +48,8 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
   };
 
   // per replica; under MPI (studies::ReplicaSpread) these reach rank 0 from every rank
-  std::vector<double> engine_s(k), rate(k), drift_e(k), drift_p(k), cpp(k), coll(k), kurt(k);
+  std::vector<double> engine_s(k), rate(k), drift_e(k), drift_p(k), cpp(k), coll(k), kurt(k),
+      ks(k);
   DriverState st0;
   double engine_bpp = 0.0, setup_s = 0.0;
   const auto t0 = Clock::now();
@@ -69,6 +71,7 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
     drift_p[r] = momentum_drift(c0, c1);
     cpp[r] = engine.collisions_per_particle();
     kurt[r] = moments(r).last("kurtosis_x");
+    ks[r] = moments(r).last("ks_p_speed");
     if (r == 0) engine_bpp = engine.bytes_per_particle();
   };
   if (k == 1) {
@@ -89,7 +92,7 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
           Checkpointer none;
           body(r, engine, r == 0 ? st0 : st, conserved(engine.particles()), none);
         },
-        {&engine_s, &rate, &drift_e, &drift_p, &cpp, &coll, &kurt});
+        {&engine_s, &rate, &drift_e, &drift_p, &cpp, &coll, &kurt, &ks});
     // replica 0 ran on rank 0, which writes the files; the other ranks are done
     if (!studies::replica_root()) return rec;
   }
@@ -120,6 +123,8 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
   // one replica has no standard error (NaN, analysis/estimates.hpp); its summary says 0
   const auto [kurt_mean, kurt_se_k] = analysis::mean_se(kurt);
   const double kurt_se = k == 1 ? 0.0 : kurt_se_k;
+  const auto [ks_mean, ks_se_k] = analysis::mean_se(ks);
+  const double ks_se = k == 1 ? 0.0 : ks_se_k;
   analysis::JsonObject keys{{"replicas", std::int64_t{k}},
                             {"threads", std::int64_t{o.threads}},
                             {"scheme", o.scheme}};
@@ -134,6 +139,8 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
   keys.emplace_back("collisions_per_particle", cpp[0]);
   keys.emplace_back("kurtosis_x_replica_mean", kurt_mean);
   keys.emplace_back("kurtosis_x_replica_se", kurt_se);
+  keys.emplace_back("ks_p_speed_replica_mean", ks_mean);
+  keys.emplace_back("ks_p_speed_replica_se", ks_se);
   rec.summary = run_summary(o, f, keys, st0);
   summarize_outputs(rec.outputs, rec.summary);
   return rec;

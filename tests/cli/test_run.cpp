@@ -11,6 +11,8 @@
 #include <limits>
 
 #include "cli/run_cli.hpp"
+#include "hypergas/analysis/estimates.hpp"
+#include "hypergas/rng.hpp"
 #include "hypergas/granular/theory.hpp"
 
 namespace {
@@ -710,5 +712,51 @@ TEST_CASE("run --engine edmd --restitution 0.8 cools at the first-Sonine rate", 
   const double haff = json_number(summary, "haff_t0");
   const double haff_e = json_number(summary, "haff_t0_enskog");
   CHECK(std::abs(haff - haff_e) <= 4.0 * json_number(summary, "haff_t0_error") + 0.05 * haff_e);
+}
+TEST_CASE("run --replicas 3 prints the replicas' mean +- standard error, not replica 0",
+          "[cli]") {
+  // Replica r runs with seed mix64(seed ^ mix64(r)) (studies/replicas.hpp); the same run with
+  // that --seed gives replica r's final kurtosis and KS p-value, whose mean and standard
+  // error the stdout line of the three-replica run must print.
+  Scratch s("replica_mean");
+  const std::uint64_t seed = 11;
+  const std::vector<std::string> base{"run", "--dim", "3", "--n", "2000", "--until", "4"};
+  std::vector<double> kurt, ks;
+  for (int r = 0; r < 3; ++r) {
+    const std::uint64_t sr =
+        r == 0 ? seed
+               : hypergas::detail::mix64(seed ^ hypergas::detail::mix64(std::uint64_t(r)));
+    auto args = base;
+    const auto dir = s.path() / ("one" + std::to_string(r));
+    args.insert(args.end(), {"--seed", std::to_string(sr), "--out", dir.string()});
+    REQUIRE(cli_test::run(args, s.path()).code == 0);
+    const std::string js = cli_test::slurp(dir / "summary.json");
+    kurt.push_back(json_number(js, "kurtosis_x"));
+    ks.push_back(json_number(js, "ks_p_speed"));
+  }
+  auto args = base;
+  args.insert(args.end(), {"--seed", "11", "--replicas", "3", "--out",
+                           (s.path() / "three").string()});
+  const auto res = cli_test::run(args, s.path());
+  REQUIRE(res.code == 0);
+  const auto k = hypergas::analysis::mean_se(kurt);
+  const auto p = hypergas::analysis::mean_se(ks);
+  REQUIRE(k.mean != kurt[0]);
+  const std::string js = cli_test::slurp(s.path() / "three" / "summary.json");
+  CHECK(json_number(js, "kurtosis_x_replica_mean") == Approx(k.mean).epsilon(1e-12));
+  CHECK(json_number(js, "kurtosis_x_replica_se") == Approx(k.se).epsilon(1e-9));
+  CHECK(json_number(js, "ks_p_speed_replica_mean") == Approx(p.mean).epsilon(1e-12));
+  CHECK(json_number(js, "ks_p_speed_replica_se") == Approx(p.se).epsilon(1e-9));
+  // the printed figures ({:.4g}) after their labels
+  INFO(res.out);
+  const auto number_after = [&](const std::string& label, std::size_t from = 0) {
+    const auto pos = res.out.find(label, from);
+    REQUIRE(pos != std::string::npos);
+    return std::strtod(res.out.c_str() + pos + label.size(), nullptr);
+  };
+  CHECK(res.out.find("3 replicas, mean +- se") != std::string::npos);
+  CHECK(number_after("final kurtosis_x ") == Approx(k.mean).epsilon(1e-3));
+  CHECK(number_after("+- ", res.out.find("final kurtosis_x")) == Approx(k.se).epsilon(1e-3));
+  CHECK(number_after("KS p-value of speeds ") == Approx(p.mean).epsilon(1e-3));
 }
 #endif

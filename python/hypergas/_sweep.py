@@ -42,7 +42,9 @@ def read_sweep(path, table="cases", frame=None):
     ``table="cases"`` reads DIR/sweep.csv (one row per finished case: ``case``, the swept
     options, ``replica``, ``seed`` and the summary fields); ``table="groups"`` reads
     DIR/groups.csv (one row per group of replicas: ``group``, the swept options,
-    ``replicas`` and ``<field>_mean``, ``<field>_se`` for each numeric summary field), which
+    ``replicas``, the numeric fields with one value in each group's replicas, such as
+    ``dim`` and ``n``, once under their own names, and ``<field>_mean``, ``<field>_se`` for
+    each other numeric summary field), which
     exists only when the plan has ``[sweep] replicas`` > 1.
 
     A column whose non-empty fields are all numbers is float64 (an empty field is nan);

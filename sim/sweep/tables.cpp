@@ -227,10 +227,32 @@ void Tables::write() const {
       }
     if (any && all) numeric.push_back(k);
   }
+  // A numeric field with one value (the same text) in all the finished replicas of each
+  // group, seen in at least one group of two or more, is a setting or a function of the
+  // settings (dim, n, time, packing, ...): one plain column under its own name. The others
+  // vary between replicas: <key>_mean, <key>_se.
+  std::vector<std::string> fixed, varying;
+  for (const auto& k : numeric) {
+    bool same = true, seen_two = false;
+    for (std::size_t first = 0; first < cases_.size() && same; first += plan_.replicas) {
+      const std::string* v0 = nullptr;
+      int count = 0;
+      for (int r = 0; r < plan_.replicas && same; ++r) {
+        if (!rows_[first + r]) continue;
+        const std::string* v = lookup(*rows_[first + r], k);
+        ++count;
+        if (count == 1) v0 = v;
+        else same = v && v0 && *v == *v0;
+      }
+      seen_two = seen_two || count >= 2;
+    }
+    (same && seen_two ? fixed : varying).push_back(k);
+  }
   std::string g = "group";
   for (const Swept& s : plan_.swept) g.append(",").append(column(s));
   g += ",replicas";
-  for (const auto& k : numeric) g += fmt::format(",{}_mean,{}_se", k, k);
+  for (const auto& k : fixed) g.append(",").append(k);
+  for (const auto& k : varying) g += fmt::format(",{}_mean,{}_se", k, k);
   g += "\n";
   const int width = id_width(cases_.size() / static_cast<std::size_t>(plan_.replicas));
   for (std::size_t first = 0; first < cases_.size(); first += plan_.replicas) {
@@ -241,7 +263,13 @@ void Tables::write() const {
     g += fmt::format("{:0{}}", c.group, width);
     for (const std::string& v : c.values) g.append(",").append(csv_text(v));
     g += fmt::format(",{}", count);
-    for (const auto& k : numeric) {
+    for (const auto& k : fixed) {
+      const std::string* v = nullptr;
+      for (int r = 0; r < plan_.replicas && !v; ++r)
+        if (rows_[first + r]) v = lookup(*rows_[first + r], k);
+      g.append(",").append(v ? csv_field(*v) : std::string());
+    }
+    for (const auto& k : varying) {
       std::vector<double> xs;
       for (int r = 0; r < plan_.replicas; ++r)
         if (rows_[first + r])

@@ -8,8 +8,10 @@
 // analysis_s, output_s, checkpoints, resumes, peak_rss_bytes_per_particle) are left out, so
 // that the file depends on the plan alone: the same for any number of ranks, for a sweep
 // killed and resumed, for any machine load. groups.csv (plans with replicas > 1) has one
-// row per group of replicas: `group`, the swept options, `replicas` (finished) and, for each
-// numeric field, its mean and standard error (`_mean`, `_se`; se empty below 2 replicas).
+// row per group of replicas: `group`, the swept options, `replicas` (finished), the numeric
+// fields with one value in every group's replicas (the fixed options and what follows from
+// them: dim, n, time, ...) once under their own names, and for each other numeric field its
+// mean and standard error (`_mean`, `_se`; se empty below 2 replicas).
 // Both are written atomically (a temporary file renamed over the old one).
 #pragma once
 

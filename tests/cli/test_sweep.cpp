@@ -16,7 +16,8 @@
 // - a bad plan or folder exits with code 2, one message naming the problem, nothing written;
 // - 200 cases on 3 ranks: each runs exactly once (one row, one folder with its own seed, one
 //   "done" line), on more than one rank (the cases are handed out while others run);
-// - groups.csv holds each group's mean and standard error of its replicas' sweep.csv values;
+// - groups.csv holds each group's mean and standard error of its replicas' sweep.csv values,
+//   and the values fixed within every group (dim, time, ...) once under their own names;
 // - a case that fails at run time makes the sweep exit 1 with the other cases finished, and
 //   --resume runs that case again.
 // The MPI parts need the launcher found at configure time (HYPERGAS_MPIEXEC); without it
@@ -583,7 +584,9 @@ TEST_CASE("200 tiny cases on 3 ranks: every case exactly once", "[sweep]") {
   CHECK(*ranks.rbegin() <= 2);
 }
 
-TEST_CASE("groups.csv holds the mean and standard error of each group's replicas", "[sweep]") {
+TEST_CASE("groups.csv holds the mean and standard error of each group's replicas and its fixed "
+          "options once",
+          "[sweep]") {
   Scratch s("sweep-groups");
   write_file(s.path() / "plan.toml",
              plan("engine = \"dsmc\"\ndim = 2\nuntil = 1\nseed = 7\n",
@@ -599,6 +602,16 @@ TEST_CASE("groups.csv holds the mean and standard error of each group's replicas
         std::vector<std::string>{"group", "model", "n", "replicas"});
   CHECK(std::find(groups.header.begin(), groups.header.end(), "seed_mean") ==
         groups.header.end());
+  // the options fixed in the plan appear once, as plain values, never averaged
+  const auto has = [&](const std::string& h) {
+    return std::find(groups.header.begin(), groups.header.end(), h) != groups.header.end();
+  };
+  for (const char* fixed : {"dim", "time"}) {
+    CHECK(has(fixed));
+    CHECK_FALSE(has(std::string(fixed) + "_mean"));
+    CHECK_FALSE(has(std::string(fixed) + "_se"));
+  }
+  CHECK_FALSE(has("n_mean"));
 
   // Every <f>_mean / <f>_se pair against the mean and standard error (sample standard
   // deviation / sqrt(count)) of column f over the group's 4 rows of sweep.csv.
@@ -617,6 +630,7 @@ TEST_CASE("groups.csv holds the mean and standard error of each group's replicas
     return x;
   };
   bool some_spread = false;
+  std::map<std::string, bool> spread;  // per averaged field: some group's replicas differ
   for (std::size_t g = 0; g < 4; ++g) {
     const auto& row = groups.rows[g];
     INFO("group " << g);
@@ -627,6 +641,9 @@ TEST_CASE("groups.csv holds the mean and standard error of each group's replicas
       CHECK(c.at("model") == row.at("model"));
       CHECK(c.at("n") == row.at("n"));
       CHECK(c.at("replica") == std::to_string(rep));
+      CHECK(c.at("dim") == "2");
+      CHECK(c.at("dim") == row.at("dim"));
+      CHECK(c.at("time") == row.at("time"));
     }
     for (const std::string& f : fields) {
       INFO("column " << f);
@@ -643,9 +660,15 @@ TEST_CASE("groups.csv holds the mean and standard error of each group's replicas
       // the standard error relative to itself, or to the mean where the replicas agree
       CHECK(std::fabs(got_se - se) <= 1e-12 * std::max(se, std::fabs(mean)));
       some_spread = some_spread || se > 0.0;
+      spread[f] = spread[f] || xs[0] != xs[1] || xs[0] != xs[2] || xs[0] != xs[3];
     }
   }
   CHECK(some_spread);  // the replicas differ: the standard errors are not all zero
+  // a field averaged in groups.csv is one whose replicas differ in some group
+  for (const auto& [f, differs] : spread) {
+    INFO("averaged column " << f);
+    CHECK(differs);
+  }
 }
 
 TEST_CASE("A case that fails at run time: exit 1, the others finish, --resume runs it again",

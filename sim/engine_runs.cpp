@@ -15,6 +15,8 @@ RunRecord simulate(const RunOptions& o, bool progress, RunContext& ctx) {
     fmt::print(stderr,
                "hypergas: note: in D = 1 equal masses only swap velocities, so the gas never "
                "relaxes; use --mass-ratio R (R != 1) for a two-mass gas\n");
+  for (const std::string& note : options::span_notes(o, sampling_start(o)))
+    fmt::print(stderr, "hypergas: note: {}\n", note);
   return for_dim(o.dim, [&](auto dim) {
     return detail::run_dim<decltype(dim)::value>(o, progress, ctx);
   });

@@ -17,6 +17,21 @@
 namespace hypergas::cli {
 
 #ifdef HYPERGAS_H5MD
+std::string state_checksum(const h5md::State& s) {
+  // FNV-1a, 64 bits: offset basis 14695981039346656037, prime 1099511628211
+  std::uint64_t h = 14695981039346656037ULL;
+  const auto add = [&](const std::vector<double>& v) {
+    const auto* p = reinterpret_cast<const unsigned char*>(v.data());
+    for (std::size_t i = 0; i < v.size() * sizeof(double); ++i) {
+      h ^= p[i];
+      h *= 1099511628211ULL;
+    }
+  };
+  add(s.positions);
+  add(s.velocities);
+  return fmt::format("{:016x}", h);
+}
+
 InitSpecies init_species(const std::vector<double>& mass, const std::vector<std::int32_t>& species,
                          const std::string& file) {
   InitSpecies out;
@@ -60,6 +75,8 @@ void apply_init_file(options::RunOptions& o) {
                                      k));
   const h5md::State s = h5md::read_state(o.init_file, o.init_frame);
   const std::string& f = o.init_file;
+  o.init_frame_read = static_cast<long long>(s.frame);
+  o.init_checksum = state_checksum(s);
   if (o.was_given("--dim") && o.dim != s.dim)
     throw InvalidInput(fmt::format("--dim {} differs from the dimension {} of {} (leave --dim "
                                    "out: the file sets it)",

@@ -29,11 +29,17 @@ namespace hypergas::cli {
 
 /// Checks --init-file and --init-frame against the other options and sets o.dim, o.n (and,
 /// for EDMD, o.packing) from the file: the `adjust` step of options::from_given. Throws
-/// InvalidInput with one line. Without --init-file: refuses a lone --init-frame. In a build
-/// without HDF5 refuses --init-file and --trajectory-every.
+/// InvalidInput with one line. Also records the frame read (o.init_frame_read, the index
+/// counted from 0) and its state_checksum (o.init_checksum). Without --init-file: refuses a
+/// lone --init-frame. In a build without HDF5 refuses --init-file and --trajectory-every.
 void apply_init_file(options::RunOptions& o);
 
 #ifdef HYPERGAS_H5MD
+/// The checksum of a state as summary.json's init_checksum records it: FNV-1a 64 of the
+/// bytes of its positions (none for a velocity-space state), then of its velocities, as
+/// read (doubles in this machine's byte order), as 16 lower-case hex digits.
+std::string state_checksum(const h5md::State& s);
+
 /// The species of a file's particles: mass 1 is species 0; every other particle has the one
 /// other mass, mass_ratio (1: one species), and there are `heavy` of them. Throws
 /// InvalidInput for more than two masses, or species without masses.

@@ -11,6 +11,7 @@
 
 #include "hypergas/error.hpp"
 #include "hypergas/options/from_given.hpp"
+#include "engine_runs.hpp"
 #include "init_file.hpp"
 
 namespace hypergas::cli {
@@ -99,7 +100,11 @@ void add_run_options(CLI::App& app, RunArgs& a) {
                          other_edmd, other_dsmc));
 }
 
-RunOptions run_options(const RunArgs& a) { return options::from_given(a.given, apply_init_file); }
+RunOptions run_options(const RunArgs& a) {
+  RunOptions o = options::from_given(a.given, apply_init_file);
+  options::validate_span(o, sampling_start(o));
+  return o;
+}
 
 void add_bench_options(CLI::App& app, BenchOptions& o) {
   app.add_option("--engine", o.engine,

@@ -13,6 +13,7 @@
 // whole number of the run's intervals is refused with the nearest ones that are.
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 #include <fmt/core.h>
@@ -50,13 +51,32 @@ RunOptions extended(RunOptions o, double until) {
     x.equilibration = t0;
     mark_given(x, "--equilibration");
   }
-  const Schedule now = x.schedule(t0);
-  if (now.every() != old.every() || now.time(old.intervals()) != old.until()) {
+  // whether an end u keeps the stopped run's sampling instants
+  const auto keeps = [&](double u) {
+    RunOptions y = x;
+    y.until = u;
+    try {
+      const Schedule s = y.schedule(t0);
+      return s.every() == old.every() && s.time(old.intervals()) == old.until();
+    } catch (const InvalidInput&) {
+      return false;
+    }
+  };
+  // an end near u as the fewest decimals that, read back as --until, keep the instants
+  const auto text = [&](double u) {
+    for (int d = 0; d <= 17; ++d) {
+      const std::string t = fmt::format("{:.{}f}", u, d);
+      const double v = std::strtod(t.c_str(), nullptr);
+      if (std::abs(v - u) <= 1e-9 * std::abs(u) && v >= o.until && keeps(v)) return t;
+    }
+    return fmt::format("{}", u);
+  };
+  if (!keeps(until)) {
     const double k = std::floor((until - t0) / old.every());
     throw InvalidInput(fmt::format(
         "resume --until {}: the run sampled every {} from {}, and a span that is not a "
         "whole number of those intervals would move its rows; try --until {} or {}",
-        until, old.every(), t0, t0 + k * old.every(), t0 + (k + 1.0) * old.every()));
+        until, old.every(), t0, text(t0 + k * old.every()), text(t0 + (k + 1.0) * old.every())));
   }
   validate(x);
   return x;
@@ -109,6 +129,9 @@ int resume_command(const ResumeOptions& r) {
     in.fail(fmt::format("written by '{}', this is '{}'; only the same build continues a run "
                         "bit for bit",
                         id, build_identity()));
+  long long init_frame = -1;
+  std::string init_checksum;
+  in(init_frame, init_checksum);
   RunArgs a;
   CLI::App app{"hypergas run (from a checkpoint)"};
   add_run_options(app, a);
@@ -121,6 +144,10 @@ int resume_command(const ResumeOptions& r) {
     in.fail(fmt::format("its run options do not parse: {}", e.what()));
   }
   RunOptions o = run_options(a);
+  // the start the run had, even if --init-file has changed since: the engine's state comes
+  // from the checkpoint
+  o.init_frame_read = init_frame;
+  o.init_checksum = init_checksum;
   if (extend) o = extended(std::move(o), r.until);
   o.json = r.json;
   return run_command(o, &in);

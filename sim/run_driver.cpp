@@ -51,6 +51,7 @@ std::string build_identity() {
 void save_header(checkpoint::Writer& w, const RunOptions& o) {
   w.tag("hypergas-run");
   w(build_identity(), options::replay_arguments(o));
+  w(o.init_frame_read, o.init_checksum);  // the frame of --init-file the run started from
 }
 
 double peak_rss_bytes() {

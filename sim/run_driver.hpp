@@ -173,8 +173,9 @@ void drive(Engine& engine, const RunPlan& plan, DriverState& st, Observer& obs,
 /// "hypergas <version> (<compiler>)": a checkpoint is continued only by the same build.
 std::string build_identity();
 
-/// Writes the run's header: section "hypergas-run", build_identity(), and the options that
-/// resume parses again (options::replay_arguments).
+/// Writes the run's header: section "hypergas-run", build_identity(), the options that
+/// resume parses again (options::replay_arguments), then the --init-file frame the run
+/// started from (RunOptions::init_frame_read, init_checksum; -1 and "" without one).
 void save_header(checkpoint::Writer& w, const RunOptions& o);
 
 /// Peak resident memory of this process so far (bytes; getrusage).

@@ -25,12 +25,21 @@ analysis::JsonObject run_summary(const RunOptions& o, const RunFacts& f,
       {"collisions_per_s", f.collisions_per_s},
       {"energy_rel_drift", f.energy_rel_drift},
       {"momentum_drift", f.momentum_drift},
-      {"init", std::string(registry::name(o.initial_state()))},
+      {"init", o.init_file.empty() ? std::string(registry::name(o.initial_state()))
+                                   : std::string("file")},
+  };
+  if (!o.init_file.empty()) {  // the start: which frame of which file (init_file.hpp)
+    s.emplace_back("init_file", o.init_file);
+    s.emplace_back("init_frame", static_cast<std::int64_t>(o.init_frame_read));
+    s.emplace_back("init_checksum", o.init_checksum);
+  }
+  const analysis::JsonObject run{
       {"time", f.time},
       {"every", f.every},
       {"mass_ratio", o.mass_ratio},
       {"fraction", f.fraction},
   };
+  s.insert(s.end(), run.begin(), run.end());
   s.insert(s.end(), engine_keys.begin(), engine_keys.end());
   const analysis::JsonObject process{
       {"setup_s", f.setup_s},

@@ -30,7 +30,8 @@ struct RunFacts {
 
 /// The summary of a run: the contract's keys (dim, engine, model, n, seed, collisions,
 /// wall_s, collisions_per_s, energy_rel_drift, momentum_drift), the run's description
-/// (init, time, every, mass_ratio, fraction), the engine's own keys `engine_keys`, the
+/// (init: "file" for a run from --init-file, which adds init_file, init_frame and
+/// init_checksum; time, every, mass_ratio, fraction), the engine's own keys `engine_keys`, the
 /// process measures of `st` (engine_s, analysis_s, engine_bytes_per_particle,
 /// peak_rss_bytes_per_particle, checkpoints, resumes). The outputs' keys follow.
 analysis::JsonObject run_summary(const RunOptions& o, const RunFacts& f,

@@ -161,7 +161,12 @@ void run_case(const Case& c) {
       std::string id;
       std::vector<std::string> args;
       (*in)(id, args);
-      if (id != build_identity() || args != options::replay_arguments(c.options)) in.reset();
+      long long init_frame = -1;
+      std::string init_checksum;
+      if (id == build_identity()) (*in)(init_frame, init_checksum);
+      if (id != build_identity() || args != options::replay_arguments(c.options) ||
+          init_frame != c.options.init_frame_read || init_checksum != c.options.init_checksum)
+        in.reset();
     } catch (const std::exception&) {
       in.reset();
     }

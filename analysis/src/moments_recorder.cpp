@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <optional>
 #include <utility>
 
@@ -323,8 +324,11 @@ bool MomentsRecorder::record(const Snapshot& s, const tally::Tally& t) {
   const double ks_p = ks_cap_ == 0
                           ? ks_test_binned(t.counts(0), fine_cdf_.data(), L.fine).p_value
                           : ks_test(ks_sample(s, m_mean, rows_.size()), refs[0]).p_value;
-  // kT comes from the same sample: one fitted parameter for the chi-square test.
-  const double chi2_p = chi_square_test(pooled, 1).p_value;
+  // kT comes from the same sample: one fitted parameter for the chi-square test. A gas too
+  // small for it (fewer than three groups of 5 expected counts: N below about 20) has no
+  // chi-square p-value: NaN, an empty field of moments.csv.
+  double chi2_p = std::numeric_limits<double>::quiet_NaN();
+  if (chi_square_possible(pooled, 1)) chi2_p = chi_square_test(pooled, 1).p_value;
   std::vector<double> row = {s.time,
                              s.collisions_per_particle,
                              m.m2.value,

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <vector>
+#include <utility>
 
 #include "gsl_guard.hpp"
 #include "hypergas/error.hpp"
@@ -82,7 +83,10 @@ TestResult chi_square_test(const Histogram& h, const MaxwellReference& ref, int 
   return chi_square_test(bin_probabilities(h, ref), fitted_parameters);
 }
 
-TestResult chi_square_test(const BinnedCounts& b, int fitted_parameters) {
+namespace {
+/// The counts and expectations of b's bins merged left to right until each group expects
+/// >= 5 counts (the remainder joins the last group).
+std::pair<std::vector<double>, std::vector<double>> chi_square_groups(const BinnedCounts& b) {
   check_binned(b);
   constexpr double min_expected = 5.0;
   std::vector<double> obs, expct;
@@ -103,6 +107,17 @@ TestResult chi_square_test(const BinnedCounts& b, int fitted_parameters) {
     obs.push_back(o);
     expct.push_back(e);
   }
+  return {std::move(obs), std::move(expct)};
+}
+}  // namespace
+
+bool chi_square_possible(const BinnedCounts& b, int fitted_parameters) {
+  const double groups = static_cast<double>(chi_square_groups(b).first.size());
+  return groups - 1.0 - fitted_parameters >= 1.0;
+}
+
+TestResult chi_square_test(const BinnedCounts& b, int fitted_parameters) {
+  const auto [obs, expct] = chi_square_groups(b);
   TestResult r;
   r.dof = static_cast<double>(obs.size()) - 1.0 - fitted_parameters;
   if (r.dof < 1.0)

@@ -51,7 +51,7 @@ namespace hypergas::checkpoint {
 /// Version of the file layout and of every class's io() list; a reader refuses other versions
 /// (naming both). Raised by one on every change of the layout or of any io() list, however
 /// small (docs/checkpoints.md keeps the history).
-inline constexpr std::uint32_t format_version = 8;
+inline constexpr std::uint32_t format_version = 9;
 
 namespace detail {
 

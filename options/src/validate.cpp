@@ -4,7 +4,9 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <type_traits>
+#include <vector>
 #include <unistd.h>
 
 #include <fmt/core.h>
@@ -254,6 +256,15 @@ namespace {
 void validate_physics(const RunOptions& o) {
   if (o.was_given("--fraction") && o.mass_ratio == 1.0)
     reject("--fraction is the share of the second mass: it needs --mass-ratio other than 1");
+  // the second species holds round(fraction N) particles (initial_state.hpp)
+  if (two_species(o) && o.init_file.empty() &&
+      (std::llround(o.fraction * static_cast<double>(o.n)) == 0 ||
+       std::llround(o.fraction * static_cast<double>(o.n)) == o.n))
+    reject(fmt::format("--mass-ratio {} with --fraction {} and --n {}: round(fraction N) = {} of "
+                       "the N particles have the second mass, so the gas has one species; give "
+                       "a --fraction with 1 <= fraction N < N, or leave out --mass-ratio",
+                       o.mass_ratio, o.fraction, o.n,
+                       std::llround(o.fraction * static_cast<double>(o.n))));
   if (o.engine_kind() != registry::EngineKind::dsmc) return;
   if (o.init == "bkw" && o.model != dsmc::MaxwellMolecules::name)
     reject(fmt::format("--init bkw is the exact solution for Maxwell molecules only: add "
@@ -317,6 +328,57 @@ void validate(const RunOptions& o) {
                       o.packing));
   }
   check_memory(o.n, o.dim, edmd);
+}
+
+void validate_span(const RunOptions& o, double t0) {
+  if (o.engine_kind() != registry::EngineKind::dsmc ||
+      registry::scheme(o.scheme) != dsmc::Scheme::ntc)
+    return;
+  // the run stops at every sampling instant, and a step never passes a stop
+  const Schedule s = o.schedule(t0);
+  if (s.every() > 0.0 && o.dt > s.every() * (1.0 + 1e-12))
+    reject(fmt::format("--dt {} is longer than the sampling interval {} (--until {} in {} "
+                       "intervals): each NTC step ends at a sampling instant, so the steps "
+                       "would be {}; give --dt <= {} or a longer --every",
+                       o.dt, s.every(), o.until, s.intervals(), s.every(), s.every()));
+}
+
+std::vector<std::string> span_notes(const RunOptions& o, double t0) {
+  std::vector<std::string> notes;
+  const Schedule s = o.schedule(t0);
+  const double span = o.until - t0;
+  const std::string from = t0 > 0.0 ? fmt::format(" from t = {}", t0) : std::string();
+  if (o.was_given("--every") && o.every > span * (1.0 + 1e-12))
+    notes.push_back(fmt::format("--every {} is longer than the sampled span {}{}: one interval, "
+                                "rows at t = {} and {} only",
+                                o.every, span, from, t0, o.until));
+  // frames and histograms at every m-th sampling instant, m = round(T / every)
+  // (sim/outputs/output.hpp: sampling_stride)
+  const auto series = [&](const char* option, double want, const char* what) {
+    if (!(want > 0.0) || s.intervals() == 0) return;
+    const double m = std::max(1.0, std::round(want / s.every()));
+    const double got = m * s.every();
+    const auto k = static_cast<std::uint64_t>(m);
+    const bool at_end = s.intervals() % k == 0;
+    if (std::abs(got - want) <= 1e-9 * want && at_end) return;
+    const double last = s.time(s.intervals() / k * k);
+    std::string tail;
+    if (!at_end) {
+      tail = fmt::format(", not at --until {}", o.until);
+      const double per = span / want;  // frames that would fit the span
+      if (std::abs(per - std::round(per)) <= 1e-9 * per)
+        tail += fmt::format("; --every {:.6g} gives {} every {} up to --until", want / m, what,
+                            want);
+      else
+        tail += fmt::format("; a {} that divides the sampled span {} reaches it", option, span);
+    }
+    notes.push_back(fmt::format("{} {}: {} every {:.6g} ({} sampling intervals of {:.6g}) from "
+                                "t = {}, the last at t = {:.6g}{}",
+                                option, want, what, got, k, s.every(), t0, last, tail));
+  };
+  series("--trajectory-every", o.trajectory_every, "frames");
+  series("--histogram-every", o.histogram_every, "histograms");
+  return notes;
 }
 
 namespace {

@@ -11,6 +11,7 @@
 
 #include "hypergas/error.hpp"
 #include "hypergas/options/from_given.hpp"
+#include "../engine_runs.hpp"
 #include "../init_file.hpp"
 #include "hypergas/options/suggest.hpp"
 #include "hypergas/studies/replicas.hpp"
@@ -298,6 +299,7 @@ std::vector<Case> make_cases(const Plan& plan, const std::filesystem::path& dir)
           options::set_text(o, *options::find("out"), (dir / "cases" / c.id).string());
           apply_init_file(o);  // a plan's init_file key: the file sets D, N (EDMD: packing)
         });
+        options::validate_span(c.options, sampling_start(c.options));
       } catch (const InvalidInput& e) {
         bad(fmt::format("case {} ({}): {}", c.id, c.label.empty() ? "the only case" : c.label,
                         e.what()));

@@ -58,6 +58,9 @@ double kl_divergence(const BinnedCounts& b);
 TestResult chi_square_test(const Histogram& h, const MaxwellReference& ref,
                            int fitted_parameters = 0);
 TestResult chi_square_test(const BinnedCounts& b, int fitted_parameters = 0);
+/// Whether chi_square_test(b, fitted_parameters) has a test: at least 2 + fitted_parameters
+/// groups of >= 5 expected counts (it throws InvalidInput otherwise).
+bool chi_square_possible(const BinnedCounts& b, int fitted_parameters = 0);
 
 /// Two-sided one-sample Kolmogorov–Smirnov test of `sample` against ref.cdf: statistic
 /// D_n = sup |F_n - F|, p from the asymptotic Kolmogorov distribution with Stephens' (1970)

@@ -64,6 +64,10 @@ struct RunOptions {
   double rdf_max = 0.0;           ///< largest r of g(r) (sigma)
   double k_max = 0.0;             ///< largest |k| of S(k) (1/sigma)
   std::vector<std::string> given;  ///< options set explicitly, as "--name", in order
+  // What the command read from --init-file (not options: set by the command's
+  // apply_init_file, kept in the checkpoint, written to summary.json)
+  long long init_frame_read = -1;  ///< the index (0 the first) of the frame read
+  std::string init_checksum;       ///< FNV-1a 64 of its positions and velocities, 16 hex digits
 
   /// Whether option `name` ("--packing") was set explicitly.
   bool was_given(const std::string& name) const;

@@ -85,6 +85,17 @@ struct RunOptions {
 /// against --packing, the memory the state needs. Throws InvalidInput naming the options.
 void validate(const RunOptions& o);
 
+/// The command's checks on the sampled span from t0 (0 for DSMC, the end of the EDMD
+/// equilibration) to --until, which Python's engines (whose run() takes its own span) do
+/// not have: --scheme ntc with a --dt longer than the sampling interval. Throws
+/// InvalidInput.
+void validate_span(const RunOptions& o, double t0);
+/// What the command does with the span that differs from what was asked, one line each
+/// (printed as notes): an --every longer than the span (one interval), a
+/// --trajectory-every or --histogram-every that is no whole number of sampling intervals
+/// or does not reach --until (the spacing and the last instant used).
+std::vector<std::string> span_notes(const RunOptions& o, double t0);
+
 /// --transport samples from this time on (mean collision times): the start relaxes first.
 inline constexpr double transport_warmup = 20.0;
 

@@ -166,18 +166,20 @@ TEST_CASE("hypergas report --quick: CSV shape and the statistical slope -1/2", "
     FAIL("no schemes.csv row " << scheme << " dt " << dt << " N " << n);
     return rows.front();
   };
-  // Physics of the points: one run's error of the exact scheme falls as N^(-1/2) (a factor
-  // 10 from 1e4 to 1e6; each RMS error from 6..16 runs is good to ~30 %, so [3, 30] is
-  // > 4 se either way). NTC at dt = 2 has a kurtosis bias of ~1.6e-3 (ntc.csv, full report),
-  // ~3x the exact scheme's one-run error of ~5e-4 at N = 1e6: its error levels off above
-  // twice the exact one (the bias is > 5 se of its estimate from 6 runs).
+  // Physics of the points: one run's error of the exact scheme falls as N^(-1/2), a factor
+  // 10 from 1e4 to 1e6. The RMS errors from 16 and 6 runs have relative standard errors of
+  // 18 % and 32 %, so the log of the ratio has sd ~0.37: [2.5, 40] is 3.7 sd either way
+  // (false failure ~2e-4). NTC at dt = 2 has a kurtosis bias of ~1.4e-3 (ntc.csv, full
+  // report) against the exact scheme's one-run error of ~4.5e-4 at N = 1e6: its error
+  // levels off above the exact one (difference ~1e-3, ~3.3 sd of the two estimates from 6
+  // runs each: false failure ~5e-4).
   const double fall = row("exact", 0, 1e4).error / row("exact", 0, 1e6).error;
   INFO("exact: one-run error 1e4 / 1e6 = " << fall);
-  CHECK(fall > 3.0);
-  CHECK(fall < 30.0);
+  CHECK(fall > 2.5);
+  CHECK(fall < 40.0);
   INFO("NTC dt = 2 at 1e6: " << row("ntc", 2, 1e6).error << ", exact "
                              << row("exact", 0, 1e6).error);
-  CHECK(row("ntc", 2, 1e6).error > 2.0 * row("exact", 0, 1e6).error);
+  CHECK(row("ntc", 2, 1e6).error > row("exact", 0, 1e6).error);
 
   // The recommendation, recomputed from the CSV: for each target E the measured point with
   // error <= E and the least run time; the summary and recommendation.txt print it.

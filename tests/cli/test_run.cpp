@@ -132,6 +132,18 @@ TEST_CASE("the default scene prints one row per D and writes CSV under --out", "
     CHECK(cli_test::fs::exists(out / ("speed_histogram_D" + std::to_string(d) + ".csv")));
   }
   CHECK(starts_with(header(out / "summary.csv"), "dim,n,mass_ratio"));
+  // D = 1 runs to 3 x --until, and stderr says so: the last row of relaxation_D1.csv is at
+  // t = 12, that of D = 2 at t = 4
+  CHECK(r.err.find("hypergas: note: D = 1 runs to t = 12, 3 times --until 4: its 1:3 "
+                   "two-mass gas relaxes more slowly") != std::string::npos);
+  const auto last_time = [&](int d) {
+    const auto rows = cli_test::lines(
+        cli_test::slurp(out / ("relaxation_D" + std::to_string(d) + ".csv")));
+    REQUIRE(rows.size() > 1);
+    return std::strtod(rows.back().c_str(), nullptr);
+  };
+  CHECK(last_time(1) == Approx(12.0));
+  CHECK(last_time(2) == Approx(4.0));
 }
 #endif
 

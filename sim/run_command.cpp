@@ -9,6 +9,7 @@
 // final.hgck, one of its files.
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 #include <fmt/core.h>
@@ -16,6 +17,7 @@
 #include "commands.hpp"
 #include "engine_runs.hpp"
 #include "hypergas/analysis/output.hpp"
+#include "hypergas/error.hpp"
 #include "hypergas/studies/gnuplot.hpp"
 #include "hypergas/studies/replicas.hpp"
 #include "output_dir.hpp"
@@ -23,6 +25,36 @@
 
 namespace hypergas::cli {
 
+
+namespace {
+/// A message of the EDMD --transport recorder in the command's terms: a recording too
+/// short for two correlation windows, known only once the equilibration has measured the
+/// mean free time tau, names the --until that holds them. The recorder's windows are
+/// lag_count(--correlation-time, --correlation-dt) <= correlation-time / correlation-dt + 17
+/// steps of correlation-dt tau (analysis/src/integrals.hpp); the end asked for adds 5 % for
+/// a tau that moves with a longer equilibration, rounded up to two digits. Other messages
+/// pass unchanged.
+std::string in_options(const RunOptions& o, const std::string& what) {
+  const std::string head = "helfand: the recording (", mark = "(the mean free time is ";
+  const auto at = what.find(mark);
+  if (!o.transport || what.rfind(head, 0) != 0 || at == std::string::npos) return what;
+  const double tau = std::strtod(what.c_str() + at + mark.size(), nullptr);
+  if (!(tau > 0.0) || !std::isfinite(tau)) return what;
+  const double t0 = sampling_start(o);
+  const double span =
+      1.05 * 2.0 * (o.correlation_time + 17.0 * o.correlation_dt) * tau;  // time units
+  // --equilibration given: it stays; otherwise sampling starts at until / 5
+  double until = o.was_given("--equilibration") ? t0 + span : span / 0.8;
+  const double unit = std::pow(10.0, std::floor(std::log10(until)) - 1.0);
+  until = std::ceil(until / unit) * unit;
+  return fmt::format("--transport: the recording from t = {} to --until {} ({} time units) is "
+                     "shorter than two correlation windows of --correlation-time {} mean free "
+                     "times (the mean free time is {:.4g}, so {:.4g} time units each); run "
+                     "longer: --until {:.4g}",
+                     t0, o.until, o.until - t0, o.correlation_time, tau,
+                     o.correlation_time * tau, until);
+}
+}  // namespace
 
 int run_command(const RunOptions& o, checkpoint::Reader* resume, bool quiet) {
   if (!studies::replica_root()) {  // an MPI rank other than 0: only replicas to run
@@ -46,7 +78,15 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume, bool quiet) {
   ctx.resume = resume;
   // gnuplot starts now, so that its start overlaps the run (its script follows the CSVs)
   studies::GnuplotProcess plot(out.staging());
-  RunRecord rec = simulate(o, !quiet, ctx);
+  RunRecord rec = [&] {
+    try {
+      return simulate(o, !quiet, ctx);
+    } catch (const InvalidInput& e) {
+      std::string said = in_options(o, e.what());
+      if (said == e.what()) throw;
+      throw InvalidInput(said);
+    }
+  }();
   // CSV and plots first, so that summary.json can say how long they took (output_s).
   const auto t0 = std::chrono::steady_clock::now();
   for (const auto& output : rec.outputs) output->write(out);

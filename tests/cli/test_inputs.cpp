@@ -1,7 +1,8 @@
 // CLI tests: what a run records of its inputs and what it says about inputs it cannot take
 // as given: the --init-file frame in summary.json and the checkpoint; a gas too small for
-// the chi-square test; the sampling options that the span rounds (a note on stderr) or
-// refuses (one line, exit 2); resume --until's suggested ends.
+// the chi-square test; an EDMD --transport run too short; the sampling options that the
+// span rounds (a note on stderr) or refuses (one line, exit 2); resume --until's suggested
+// ends.
 #include <catch2/catch.hpp>
 
 #ifdef HYPERGAS_CLI_PATH
@@ -252,6 +253,36 @@ TEST_CASE("run --trajectory-every and --histogram-every say the spacing they get
   CHECK(notes(run_ok(s, {"--dim", "3", "--n", "500", "--until", "2", "--histogram-every", "0.4"},
                      "g"))
             .empty());
+}
+
+TEST_CASE("run --engine edmd --transport too short for two windows: names the --until that "
+          "runs",
+          "[cli]") {
+  Scratch s("edmd-short");
+  const std::vector<std::string> args = {"run", "--engine", "edmd", "--dim", "3", "--n", "500",
+                                         "--packing", "0.1", "--transport", "--until", "40",
+                                         "--out", "o"};
+  const Result r = run(args, s.path());
+  INFO(r.err);
+  CHECK(r.code == 2);
+  REQUIRE(lines(r.err).size() == 1);
+  CHECK(r.err.rfind("hypergas: --transport: the recording from t = 8 to --until 40 (32 time "
+                    "units) is shorter than two correlation windows of --correlation-time 40 "
+                    "mean free times",
+                    0) == 0);
+  CHECK(r.err.find("helfand:") == std::string::npos);  // no recorder's prefix
+  CHECK(s.entries() == 0);
+  const std::string mark = "run longer: --until ";
+  const auto at = r.err.find(mark);
+  REQUIRE(at != std::string::npos);
+  const std::string until = lines(r.err.substr(at + mark.size()))[0];
+  CHECK(std::strtod(until.c_str(), nullptr) > 40.0);
+  // the end it names runs
+  std::vector<std::string> longer = args;
+  longer[11] = until;
+  const Result ok = run(longer, s.path());
+  INFO(ok.err);
+  CHECK(ok.code == 0);
 }
 
 TEST_CASE("resume --until suggests ends as short decimals that it accepts", "[cli]") {

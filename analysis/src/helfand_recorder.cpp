@@ -17,7 +17,6 @@ namespace hypergas::analysis {
 
 namespace {
 
-using detail::increment_value;
 using detail::running_integral;
 
 // correlator groups
@@ -27,10 +26,10 @@ enum Group : int {
   stress_point, heat_point, velocity, displacement
 };
 
-/// The shortest cut of the stress and heat-flux integrals (mean free times).
+//// The shortest cut of every transport integral (mean free times; see finish()).
 constexpr double min_cut_tau = 5.0;
 
-/// Yeh & Hummer's constant of the cubic periodic box (3D).
+// Yeh & Hummer's constant of the cubic periodic box (3D).
 constexpr double xi_cubic = 2.837297;
 
 std::vector<int> layout(int d, std::size_t tagged) {
@@ -195,14 +194,18 @@ const std::vector<TransportCoefficient>& HelfandRecorder::finish() {
   const double kT = kT_, h = h_;
   const int J = corr_->stretches();
 
-  // A row from its value and per-stretch values, with its reference values.
+  // A row from its value, per-stretch values and (where the plateau rule gave them) the
+  // truncation error, with its reference values.
   const auto row = [&](const char* name, double value, const std::vector<double>& st,
-                       double sonine, double enskog_value, std::size_t cut, double tail,
-                       double c0) {
+                       double sonine, double enskog_value, std::size_t cut, double c0,
+                       double truncation) {
     TransportCoefficient r;
     r.name = name;
     r.value = value;
-    r.error = mean_se(st).se;
+    r.statistical_error = mean_se(st).se;
+    r.truncation_error = truncation;
+    r.error = std::isfinite(truncation) ? std::hypot(r.statistical_error, truncation)
+                                        : r.statistical_error;
     r.sonine = sonine;
     r.ratio = value / sonine;
     r.ratio_error = r.error / sonine;
@@ -210,66 +213,86 @@ const std::vector<TransportCoefficient>& HelfandRecorder::finish() {
     r.enskog_ratio = value / enskog_value;
     r.enskog_ratio_error = r.error / enskog_value;
     r.t_cut = static_cast<double>(cut) * h;
-    r.tail = tail;
+    r.tail = 0.0;
     r.c0 = c0;
     r.rate = r.rate_error = r.sonine_rate = std::numeric_limits<double>::quiet_NaN();
     r.stretches = st;
     result_.push_back(r);
   };
-
-  // The cut: `window` integral times of the kinetic part, but at least 5 mean free times
-  // (the collisional stress of a dense fluid relaxes more slowly than the kinetic one) and
-  // at most a quarter of the lags (the Helfand slope is fitted up to 4 cuts).
-  const auto flux_cut = [&](const std::vector<double>& ck, const std::vector<double>& Ik) {
-    const std::size_t K = ck.size() - 1;
-    const auto least = static_cast<std::size_t>(std::llround(min_cut_tau / set_.dt));
-    return std::min(std::max(detail::auto_cut(ck, Ik, h, set_.window), least), K / 4);
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  // The plateau rule (integrals.hpp) from min_cut_tau mean free times on (the t^(-D/2)
+  // form of the tail that extrapolates the remainder holds once the collisional decay is
+  // over, not within the first few collisions), to two thirds of the lags (the
+  // Einstein-Helfand slope is fitted over [k_c / 2, 3 k_c / 2]).
+  const std::size_t K = corr_->lags() - 1;
+  const auto k0 = static_cast<std::size_t>(std::max(1.0, std::round(min_cut_tau / set_.dt)));
+  const std::size_t k_max = 2 * K / 3;
+  // Running integrals of group g to each lag k, scaled, by the trapezoid rule: of interval
+  // averages (increments), whose correlation c(l) is C smoothed by a triangle of half-width
+  // h, so that h (c(0)/2 + sum_{l<k} c(l) + c(k)/2) is int_0^{kh} C to O(h^2 C'') at the
+  // cut and exact as k grows; of point samples, with the Euler-Maclaurin end correction at
+  // 0+, h^2/12 C'(0+) (C'(0+) from the first three points; at the cut C' is negligible)
+  const auto integral_of = [&](int g, bool increments, double scale) {
+    const auto integral = [&](const std::vector<double>& c) {
+      std::vector<double> I = running_integral(c, h);
+      const double d0 = !increments && c.size() > 2
+                            ? (-3.0 * c[0] + 4.0 * c[1] - c[2]) / (2.0 * h) : 0.0;
+      for (std::size_t k = 1; k < I.size(); ++k) I[k] = (I[k] + h * h / 12.0 * d0) * scale;
+      return I;
+    };
+    std::vector<std::vector<double>> Ij;
+    for (int j = 0; j < J; ++j) Ij.push_back(integral(corr_->stretch_mean(g, j)));
+    return std::make_pair(integral(corr_->mean(g)), std::move(Ij));
   };
-  // viscosity (scale 1 / kT) and conductivity (1 / kT^2): Helfand, GK, parts, point
+
+  // viscosity (scale 1 / kT) and conductivity (1 / kT^2): Green-Kubo at the plateau of the
+  // total flux, Einstein-Helfand around the same cut, the parts to the same cut
   const auto flux = [&](const char* base, int g_tot, int g_kin, int g_col, int g_pt,
                         double scale, double ref, const enskog::Parts& f) {
-    const std::vector<double> ck = corr_->mean(g_kin);
-    const std::vector<double> Ik = running_integral(ck, h);
-    const std::size_t cut = flux_cut(ck, Ik);
-    const double g = detail::tail_rate(ck, Ik, cut, h);
-    const std::size_t K = ck.size() - 1;
-    const std::size_t a = std::min(2 * cut, K / 2), b = std::min(4 * cut, K);
-    const auto helfand = [&](const std::vector<double>& c) {
-      return 0.5 * slope(mean_square(c, h), h, a, b) * scale;
+    const auto [It, Itj] = integral_of(g_tot, true, scale);
+    const detail::Plateau P = detail::plateau(It, Itj, k0, k_max, d);
+    const std::size_t cut = P.cut;
+    const std::size_t a = std::max<std::size_t>(1, cut / 2), b = std::min(3 * cut / 2, K);
+    // the slope sees the running integral around the cut; the tail beyond it is added as
+    // for Green-Kubo (from the same stretch), with the same truncation error
+    const auto helfand = [&](const std::vector<double>& c, const std::vector<double>& I) {
+      return 0.5 * slope(mean_square(c, h), h, a, b) * scale +
+             (detail::extrapolated(I, cut, d) - I[cut]);
     };
-    const auto gk = [&](const std::vector<double>& c) {
-      return increment_value(c, cut, h, g).first * scale;
+    const auto [Ik, Ikj] = integral_of(g_kin, true, scale);
+    const auto [Ic, Icj] = integral_of(g_col, true, scale);
+    const auto [Ip, Ipj] = integral_of(g_pt, false, scale);
+    // each part to the same cut with its own tail, so that the parts add up to the total
+    const auto part = [&](const std::vector<double>& I) {
+      return detail::extrapolated(I, cut, d);
     };
-    const std::vector<double> pt = corr_->mean(g_pt);
-    const double rate_pt = detail::tail_rate(pt, running_integral(pt, h), cut, h);
-    const auto point = [&](const std::vector<double>& c) {
-      return detail::cut_value(c, running_integral(c, h), cut, h, rate_pt).first * scale;
+    const auto point = [&](const std::vector<double>&, const std::vector<double>& I) {
+      return part(I);
     };
-    std::vector<double> s_h, s_gk, s_k, s_c, s_x, s_p;
+    std::vector<double> s_h, s_k, s_c, s_x, s_p;
     for (int j = 0; j < J; ++j) {
-      const auto ct = corr_->stretch_mean(g_tot, j), kk = corr_->stretch_mean(g_kin, j);
-      const auto cc = corr_->stretch_mean(g_col, j);
-      s_h.push_back(helfand(ct));
-      s_gk.push_back(gk(ct));
-      s_k.push_back(gk(kk));
-      s_c.push_back(gk(cc));
-      s_x.push_back(s_gk.back() - s_k.back() - s_c.back());
-      s_p.push_back(point(corr_->stretch_mean(g_pt, j)));
+      const auto js = static_cast<std::size_t>(j);
+      s_h.push_back(helfand(corr_->stretch_mean(g_tot, j), Itj[js]));
+      s_k.push_back(part(Ikj[js]));
+      s_c.push_back(part(Icj[js]));
+      s_x.push_back(P.stretches[js] - s_k.back() - s_c.back());
+      s_p.push_back(point(corr_->stretch_mean(g_pt, j), Ipj[js]));
     }
-    const auto ct = corr_->mean(g_tot), cc = corr_->mean(g_col);
+    const auto ct = corr_->mean(g_tot), ck = corr_->mean(g_kin), cc = corr_->mean(g_col);
+    const auto pt = corr_->mean(g_pt);
     const std::string b0 = base;
-    const double tail = increment_value(ct, cut, h, g).second * scale;
-    row(base, helfand(ct), s_h, ref, ref * f.total(), cut, 0.0, ct[0] * scale);
-    row((b0 + "_green_kubo").c_str(), gk(ct), s_gk, ref, ref * f.total(), cut, tail,
-        ct[0] * scale);
-    row((b0 + "_kinetic").c_str(), gk(ck), s_k, ref, ref * f.kinetic, cut,
-        increment_value(ck, cut, h, g).second * scale, ck[0] * scale);
-    row((b0 + "_cross").c_str(), gk(ct) - gk(ck) - gk(cc), s_x, ref, ref * f.cross, cut, 0.0,
-        std::numeric_limits<double>::quiet_NaN());
-    row((b0 + "_collisional").c_str(), gk(cc), s_c, ref, ref * f.collisional, cut,
-        increment_value(cc, cut, h, g).second * scale, cc[0] * scale);
-    row((b0 + "_kinetic_point").c_str(), point(pt), s_p, ref, ref * f.kinetic, cut, 0.0,
-        pt[0] * scale);
+    row(base, helfand(ct, It), s_h, ref, ref * f.total(), cut, ct[0] * scale,
+        P.truncation_error);
+    row((b0 + "_green_kubo").c_str(), P.value, P.stretches, ref, ref * f.total(), cut,
+        ct[0] * scale, P.truncation_error);
+    row((b0 + "_kinetic").c_str(), part(Ik), s_k, ref, ref * f.kinetic, cut, ck[0] * scale,
+        std::fabs(part(Ik) - Ik[cut]));
+    row((b0 + "_cross").c_str(), P.value - part(Ik) - part(Ic), s_x, ref, ref * f.cross, cut,
+        nan, nan);
+    row((b0 + "_collisional").c_str(), part(Ic), s_c, ref, ref * f.collisional, cut,
+        cc[0] * scale, std::fabs(part(Ic) - Ic[cut]));
+    row((b0 + "_kinetic_point").c_str(), point(pt, Ip), s_p, ref, ref * f.kinetic, cut,
+        pt[0] * scale, std::fabs(part(Ip) - Ip[cut]));
     std::vector<double> norm(ct.size()), msd = mean_square(ct, h), hel(ct.size());
     for (std::size_t k = 0; k < ct.size(); ++k) {
       norm[k] = ct[k] / ct[0];
@@ -283,30 +306,28 @@ const std::vector<TransportCoefficient>& HelfandRecorder::finish() {
   flux("thermal_conductivity", heat_total, heat_kinetic, heat_collisional, heat_point,
        1.0 / (kT * kT), lam0, fl);
 
-  // self-diffusion: Green-Kubo of the tagged velocities, Einstein from their displacements
+  // self-diffusion: Green-Kubo of the tagged velocities and Einstein from their exact
+  // displacements (the slope of the mean square displacement is the displacement
+  // increments' integral), each at its own plateau (the groups' correlations are per
+  // component: their integrals are D_s)
   {
+    const auto [Iv, Ivj] = integral_of(velocity, false, 1.0);
+    const auto [Id, Idj] = integral_of(displacement, true, 1.0);
+    const detail::Plateau Pv = detail::plateau(Iv, Ivj, k0, k_max, d);
+    const detail::Plateau Pe = detail::plateau(Id, Idj, k0, k_max, d);
     const std::vector<double> cv = corr_->mean(velocity), cd = corr_->mean(displacement);
-    const std::vector<double> Iv = running_integral(cv, h);
-    const std::size_t cut = detail::auto_cut(cv, Iv, h, set_.window);
-    const double gv = detail::tail_rate(cv, Iv, cut, h);
-    const double gd = detail::tail_rate(cd, running_integral(cd, h), cut, h);
-    std::vector<double> s_gk, s_e;
-    for (int j = 0; j < J; ++j) {
-      const auto v = corr_->stretch_mean(velocity, j);
-      s_gk.push_back(detail::cut_value(v, running_integral(v, h), cut, h, gv).first);
-      s_e.push_back(increment_value(corr_->stretch_mean(displacement, j), cut, h, gd).first);
-    }
-    const auto [dgk, tgk] = detail::cut_value(cv, Iv, cut, h, gv);
-    const auto [de, te] = increment_value(cd, cut, h, gd);
     const double de_ref = d0 * enskog::diffusion(chi_);
-    row("self_diffusion", dgk, s_gk, d0, de_ref, cut, tgk, cv[0]);
-    row("self_diffusion_einstein", de, s_e, d0, de_ref, cut, te, cd[0]);
+    row("self_diffusion", Pv.value, Pv.stretches, d0, de_ref, Pv.cut, cv[0],
+        Pv.truncation_error);
+    row("self_diffusion_einstein", Pe.value, Pe.stretches, d0, de_ref, Pe.cut, cd[0],
+        Pe.truncation_error);
     if (d == 3) {  // the periodic box's hydrodynamic correction (Yeh & Hummer)
       const double eta = result_[0].value, L = std::cbrt(volume_);
       const double add = xi_cubic * kT / (6.0 * std::numbers::pi * eta * L);
       std::vector<double> s_yh;
-      for (double x : s_e) s_yh.push_back(x + add);
-      row("self_diffusion_yeh_hummer", de + add, s_yh, d0, de_ref, cut, te, cd[0]);
+      for (double x : Pe.stretches) s_yh.push_back(x + add);
+      row("self_diffusion_yeh_hummer", Pe.value + add, s_yh, d0, de_ref, Pe.cut, cd[0],
+          Pe.truncation_error);
     }
     std::vector<double> norm(cv.size());
     for (std::size_t k = 0; k < cv.size(); ++k) norm[k] = cv[k] / cv[0];

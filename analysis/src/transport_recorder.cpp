@@ -235,13 +235,14 @@ std::vector<double> TransportRecorder::normalised(int g) const {
 void write_transport_rows(const std::string& path, const std::vector<TransportCoefficient>& rows) {
   write_file_atomic(path, [&](std::ostream& o) {
     o << "coefficient,value,error,first_sonine,ratio,ratio_error,t_cut,tail,c0,decay_rate,"
-         "decay_rate_error,first_sonine_rate,enskog,enskog_ratio,enskog_ratio_error\n";
+         "decay_rate_error,first_sonine_rate,enskog,enskog_ratio,enskog_ratio_error,"
+         "statistical_error,truncation_error\n";
     o << std::setprecision(17);
     for (const auto& r : rows) {
       o << r.name;
       for (double x : {r.value, r.error, r.sonine, r.ratio, r.ratio_error, r.t_cut, r.tail,
                        r.c0, r.rate, r.rate_error, r.sonine_rate, r.enskog, r.enskog_ratio,
-                       r.enskog_ratio_error}) {
+                       r.enskog_ratio_error, r.statistical_error, r.truncation_error}) {
         o << ',';
         if (std::isfinite(x)) o << x;
       }

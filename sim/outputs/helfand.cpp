@@ -3,6 +3,7 @@
 // Einstein-Helfand and Green-Kubo (analysis::HelfandRecorder, kept collision by collision
 // over the measurement window), over first Sonine and Enskog.
 #include <optional>
+#include <set>
 #include <string>
 
 #include <fmt/core.h>
@@ -10,6 +11,7 @@
 #include "../output_dir.hpp"
 #include "hypergas/analysis/helfand_recorder.hpp"
 #include "output.hpp"
+#include "route_check.hpp"
 #include "plot_transport_edmd_gp.hpp"  // generated from scripts/run/transport_edmd.gp
 
 namespace hypergas::cli {
@@ -30,7 +32,8 @@ class HelfandOutput final : public Output {
     analysis::TransportSettings ts;
     ts.dt = o.correlation_dt;
     ts.max_lag = o.correlation_time;
-    ts.tagged = o.tagged;
+    correlation_time_ = o.correlation_time;
+    ts.tagged = o.was_given("--tagged") ? o.tagged : options::edmd_tagged;
     recorder_.emplace(ts, o.dim, static_cast<std::size_t>(o.n), s.window_start, o.until);
   }
 
@@ -43,10 +46,26 @@ class HelfandOutput final : public Output {
   void summarize(analysis::JsonObject& s) const override {
     s.emplace_back("transport_mean_free_time", recorder_->mean_free_time());
     s.emplace_back("transport_chi", recorder_->chi());
-    for (const auto& c : recorder_->finish()) {
+    const auto& rows = recorder_->finish();
+    for (const auto& c : rows) {
       s.emplace_back(c.name, c.value);
       s.emplace_back(c.name + "_error", c.error);
     }
+    // every coefficient with two routes: Einstein-Helfand against Green-Kubo
+    check_rows(s, rows, "viscosity", "viscosity_green_kubo");
+    check_rows(s, rows, "thermal_conductivity", "thermal_conductivity_green_kubo");
+    check_rows(s, rows, "self_diffusion", "self_diffusion_einstein");
+    // a coefficient whose remainder beyond the cut exceeds its statistical error is said:
+    // its error is then mostly the truncation's
+    for (const auto& c : rows)
+      if (c.name == whole_coefficient(c.name) && c.truncation_error > c.statistical_error &&
+          plateau_note_.insert(whole_coefficient(c.name)).second)
+        fmt::print(stderr,
+                   "hypergas: note: {}: the running integral has no plateau within "
+                   "--correlation-time {:g} mean free times (truncation error {:.2g} against "
+                   "statistical {:.2g}, both in its stated error): a longer "
+                   "--correlation-time shrinks it\n",
+                   c.name, correlation_time_, c.truncation_error, c.statistical_error);
   }
   void report(std::string& text, const analysis::JsonObject&) const override {
     // a part (kinetic, cross, collisional) over the dilute gas's whole first Sonine
@@ -63,6 +82,8 @@ class HelfandOutput final : public Output {
  private:
   // finish() caches its result, so the const accessors above may call it
   mutable std::optional<analysis::HelfandRecorder> recorder_;
+  double correlation_time_ = 0.0;
+  mutable std::set<std::string> plateau_note_;  // said once per coefficient
 };
 
 }  // namespace

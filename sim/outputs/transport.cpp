@@ -12,6 +12,7 @@
 #include "../output_dir.hpp"
 #include "hypergas/analysis/transport_recorder.hpp"
 #include "output.hpp"
+#include "route_check.hpp"
 #include "plot_transport_dsmc_gp.hpp"  // generated from scripts/run/transport_dsmc.gp
 
 namespace hypergas::cli {
@@ -63,6 +64,8 @@ class TransportOutput final : public Output {
       s.emplace_back(c.name + "_ratio", c.ratio);
       s.emplace_back(c.name + "_ratio_error", c.ratio_error);
     }
+    // the one coefficient with two routes here: tagged velocities against displacements
+    check_rows(s, recorder_->finish(), "self_diffusion", "self_diffusion_einstein");
   }
   void report(std::string& text, const analysis::JsonObject&) const override {
     // reduced: eta / (n kT tau), lambda / (n k (kT/m) tau), D_s / ((kT/m) tau)

@@ -44,6 +44,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -84,11 +85,18 @@ struct TransportCoefficient {
   double enskog_ratio = 0.0;
   double enskog_ratio_error = 0.0;
   std::vector<double> stretches;  ///< the value from each error stretch
+  /// The parts of `error` where the estimator states them (EDMD: the plateau rule,
+  /// integrals.hpp): the standard error over the stretches and the measured truncation
+  /// error of the cut, error = sqrt(statistical^2 + truncation^2); NaN where `error` is
+  /// statistical only (DSMC, whose correlations decay exponentially: the tail is fitted).
+  double statistical_error = std::numeric_limits<double>::quiet_NaN();
+  double truncation_error = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Writes transport.csv: one row per coefficient, header coefficient, value, error,
 /// first_sonine, ratio, ratio_error, t_cut, tail, c0, decay_rate, decay_rate_error,
-/// first_sonine_rate, enskog, enskog_ratio, enskog_ratio_error (empty where not finite).
+/// first_sonine_rate, enskog, enskog_ratio, enskog_ratio_error, statistical_error,
+/// truncation_error (empty where not finite).
 /// Both engines' recorders write it.
 void write_transport_rows(const std::string& path, const std::vector<TransportCoefficient>& rows);
 

@@ -99,6 +99,12 @@ std::vector<std::string> span_notes(const RunOptions& o, double t0);
 /// --transport samples from this time on (mean collision times): the start relaxes first.
 inline constexpr double transport_warmup = 20.0;
 
+/// EDMD --transport follows this many tagged particles (at most N) unless --tagged is
+/// given: the self-diffusion's plateau needs the statistical error of the running
+/// integral well below its drift (helfand_recorder.hpp); 32 (the DSMC default) leaves it
+/// above.
+inline constexpr int edmd_tagged = 256;
+
 /// The engine configurations that valid options describe.
 dsmc::Config dsmc_config(const RunOptions& o);
 edmd::Config edmd_config(const RunOptions& o);

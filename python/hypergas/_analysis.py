@@ -77,13 +77,15 @@ correlation C(t)/C(0) of group g (0, 1, 2) on the grid t = k dt; ``write_transpo
 HelfandRecorder = _hypergas.HelfandRecorder
 HelfandRecorder.__doc__ = """Viscosity, thermal conductivity and self-diffusion of an EDMD fluid.
 
-HelfandRecorder(dim, n, start, end, dt=0.05, max_lag=40, tagged=32, window=3) is what
+HelfandRecorder(dim, n, start, end, dt=0.05, max_lag=40, tagged=256, window=3) is what
 ``hypergas run --engine edmd --transport`` uses: give it to a one-species ``EDMD`` of the
 same dim and n, observed from ``start`` to ``end`` (engine time; every observation drains
 the fluxes, so the spacing of observations is free). At its first observation it measures
 the mean free time tau so far and installs the Helfand moments in the engine; dt and max_lag
-are in units of tau. ``finish()`` returns {name: {value, error, first_sonine, ratio,
-enskog, enskog_ratio, ...}} for viscosity (Einstein-Helfand), viscosity_green_kubo,
+are in units of tau. ``finish()`` returns {name: {value, error, statistical_error,
+truncation_error, first_sonine, ratio, enskog, enskog_ratio, ...}} (each integral read at
+the plateau of its running integral, the t^(-D/2) remainder added and its size the
+truncation error; error = sqrt(statistical^2 + truncation^2)) for viscosity (Einstein-Helfand), viscosity_green_kubo,
 viscosity_kinetic, _cross, _collisional, _kinetic_point, the same for
 thermal_conductivity, self_diffusion, self_diffusion_einstein (and in 3D
 self_diffusion_yeh_hummer), in units sigma = m = kT = 1 (docs/validation.md).

@@ -247,7 +247,8 @@ void bind_observers(py::module_& m) {
                  ts, static_cast<int>(d), static_cast<std::size_t>(nn), start, end);
            }),
            py::arg("dim"), py::arg("n"), py::arg("start"), py::arg("end"), py::arg("dt") = 0.05,
-           py::arg("max_lag") = 40.0, py::arg("tagged") = 32, py::arg("window") = 3.0)
+           py::arg("max_lag") = 40.0, py::arg("tagged") = options::edmd_tagged,
+           py::arg("window") = 3.0)
       .def_property_readonly("frames", &analysis::HelfandRecorder::frames)
       .def_property_readonly("dt", &analysis::HelfandRecorder::dt)
       .def_property_readonly("mean_free_time", &analysis::HelfandRecorder::mean_free_time)
@@ -263,6 +264,8 @@ void bind_observers(py::module_& m) {
                d["ratio"] = c.ratio, d["ratio_error"] = c.ratio_error, d["enskog"] = c.enskog;
                d["enskog_ratio"] = c.enskog_ratio, d["enskog_ratio_error"] = c.enskog_ratio_error;
                d["t_cut"] = c.t_cut, d["tail"] = c.tail, d["c0"] = c.c0;
+               d["statistical_error"] = c.statistical_error;
+               d["truncation_error"] = c.truncation_error;
                d["stretches"] = to_numpy(c.stretches);
                out[py::str(c.name)] = d;
              }

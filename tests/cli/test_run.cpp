@@ -242,7 +242,8 @@ TEST_CASE("run --transport writes transport.csv, correlations.csv and transport.
   REQUIRE(r.code == 0);
   CHECK(header(out / "transport.csv") ==
         "coefficient,value,error,first_sonine,ratio,ratio_error,t_cut,tail,c0,decay_rate,"
-        "decay_rate_error,first_sonine_rate,enskog,enskog_ratio,enskog_ratio_error");
+        "decay_rate_error,first_sonine_rate,enskog,enskog_ratio,enskog_ratio_error,"
+            "statistical_error,truncation_error");
   const auto rows = cli_test::lines(cli_test::slurp(out / "transport.csv"));
   REQUIRE(rows.size() == 5);
   CHECK(starts_with(rows[1], "viscosity,"));
@@ -286,7 +287,8 @@ TEST_CASE("run --engine edmd --transport --structure writes its files", "[cli]")
   REQUIRE(r.code == 0);
   CHECK(header(out / "transport.csv") ==
         "coefficient,value,error,first_sonine,ratio,ratio_error,t_cut,tail,c0,decay_rate,"
-        "decay_rate_error,first_sonine_rate,enskog,enskog_ratio,enskog_ratio_error");
+        "decay_rate_error,first_sonine_rate,enskog,enskog_ratio,enskog_ratio_error,"
+            "statistical_error,truncation_error");
   const auto rows = cli_test::lines(cli_test::slurp(out / "transport.csv"));
   REQUIRE(rows.size() == 1 + 12 + 3);
   CHECK(starts_with(rows[1], "viscosity,"));

@@ -25,6 +25,8 @@ Runs with files: :func:`run` is ``hypergas run`` (the same options, outputs and 
 
 Sweeps: :func:`read_sweep` reads the tables (sweep.csv, groups.csv) of a folder written by
 ``hypergas sweep``.
+
+``__version__`` is the version of the build, that of ``hypergas --version``.
 """
 
 import os as _os
@@ -51,6 +53,7 @@ from ._run import run
 from ._trajectory import Trajectory, read_trajectory
 from . import _hypergas
 
+__version__ = _hypergas.version  # that of `hypergas --version` and summary.json's "version"
 models = tuple(_hypergas.model_names())
 initial_states = tuple(_hypergas.initial_state_names())
 schemes = tuple(_hypergas.scheme_names())

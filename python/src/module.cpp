@@ -16,11 +16,13 @@
 #include <pybind11/pybind11.h>
 
 #include <exception>
+#include <string>
 
 #include "bindings.hpp"
 #include "keywords.hpp"
 #include "convert.hpp"
 #include "hypergas/error.hpp"
+#include "version.hpp"
 
 PYBIND11_MODULE(_hypergas, m) {
   using namespace hypergas;
@@ -41,4 +43,6 @@ PYBIND11_MODULE(_hypergas, m) {
   bind_report(m);
   bind_options(m);
   bind_run(m);
+  // the project version, that of `hypergas --version` and summary.json's "version"
+  m.attr("version") = std::string(cli::version());
 }

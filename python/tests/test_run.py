@@ -56,3 +56,13 @@ def test_bad_keywords_as_the_command(tmp_path):
     with pytest.raises(TypeError, match="unexpected keyword argument 'packing'"):
         hg.run(tmp_path / "c", engine="dsmc", packing=0.2)  # an EDMD option
     assert not (tmp_path / "a").exists() and not (tmp_path / "b").exists()
+
+
+def test_version_is_the_commands(tmp_path, cli):
+    """hypergas.__version__ is what `hypergas --version` prints and summary.json records."""
+    line = subprocess.run([cli, "--version"], check=True, capture_output=True,
+                          text=True).stdout.split()
+    assert line[0] == "hypergas"
+    assert hg.__version__ == line[1]
+    summary = hg.run(tmp_path / "v", engine="dsmc", dim=3, n=200, until=0.5)
+    assert summary["version"] == hg.__version__

@@ -4,6 +4,7 @@
 // fifth of [0, until]); the outputs, Z and the rates come from the rest.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -17,12 +18,27 @@
 #include "hypergas/edmd/lattice.hpp"
 #include "hypergas/edmd/observables.hpp"
 #include "hypergas/engine_concept.hpp"
+#include "hypergas/geometry.hpp"
 #include "hypergas/granular/theory.hpp"
 #include "run_driver.hpp"
 #include "run_observer.hpp"
 #include "run_summary.hpp"
 
 namespace hypergas::cli::detail {
+
+/// The freezing packing of hard spheres in D dimensions, where the fluid's coexistence with
+/// the solid begins (van Meel, Charbonneau, Fortini, Charbonneau, Phys. Rev. E 80, 061110
+/// (2009); 2D: the liquid-hexatic transition); 0 in 1D, which does not freeze.
+inline double edmd_freezing_packing(int d) {
+  switch (d) {
+    case 2: return 0.70;
+    case 3: return 0.494;
+    case 4: return 0.288;
+    case 5: return 0.166;
+    case 6: return 0.0996;
+    default: return 0.0;
+  }
+}
 
 /// The stops (checkpoint opportunities) in the equilibration of the lattice start, which
 /// ends where sampling starts (sampling_start, engine_runs.hpp).
@@ -76,6 +92,41 @@ RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
                "{:.1f} %); N = {} fill a lattice in D = {}\n",
                o.n, sites, vacancies, 100.0 * static_cast<double>(vacancies) / sites, fill, D);
   }
+  // What the lattice start became (edmd/state.hpp): site gaps below 10 % of a diameter, or
+  // --start-packing, start the diameters smaller and compress them to --packing. Above the
+  // freezing packing a full lattice stays a crystal, one with vacancies compresses into a
+  // glass. The rule is that of edmd::State::setup, recomputed from the options.
+  const double freezing = edmd_freezing_packing(D);
+  if (o.init_file.empty() && progress && !ctx.resume) {
+    const double box = std::pow(static_cast<double>(o.n) * ball_volume(D, 1.0) / o.packing,
+                                1.0 / D);
+    const double a = box / static_cast<double>(side);
+    const double fit = D >= 3 ? a * std::sqrt(2.0) : a;
+    double scale = fit >= 1.1 ? 1.0 : 0.9 * fit;
+    if (o.was_given("--start-packing") && o.start_packing > 0.0)
+      scale = std::min(scale, std::pow(o.start_packing / o.packing, 1.0 / D));
+    if (scale < 1.0) {
+      const bool above = freezing > 0.0 && o.packing > freezing;
+      fmt::print(stderr,
+                 "hypergas: note: the start is the lattice{} at packing {:.3g}, compressed to "
+                 "{}: {}\n",
+                 vacancies > 0 ? " with its vacancies" : "", o.packing * std::pow(scale, D),
+                 o.packing,
+                 !above          ? "below freezing it melts into the fluid"
+                 : vacancies > 0 ? "above freezing, with vacancies, it compresses into a "
+                                   "glass, not a crystal (a full lattice stays one)"
+                                 : "above freezing the full lattice stays a crystal");
+    } else if (vacancies > 0) {
+      fmt::print(stderr, "hypergas: note: the start is the lattice with its vacancies at "
+                         "packing {}\n", o.packing);
+    }
+  }
+  if (freezing > 0.0 && o.packing > freezing && progress && !ctx.resume)
+    fmt::print(stderr,
+               "hypergas: note: packing {} is above the freezing packing {} of hard spheres "
+               "in D = {} (van Meel et al., Phys. Rev. E 80, 061110 (2009)): the equilibrium "
+               "state there is a solid, a fluid is metastable\n",
+               o.packing, freezing, D);
   RunObserver obs(samplers(rec.outputs), "edmd", until, progress);
   const auto save = [&](checkpoint::Writer& w) { save_run(w, o, st, c0, engine, rec.outputs); };
   FanOut fine(fine_observers(rec.outputs));

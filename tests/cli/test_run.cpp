@@ -773,4 +773,37 @@ TEST_CASE("run --replicas 3 prints the replicas' mean +- standard error, not rep
   CHECK(number_after("+- ", res.out.find("final kurtosis_x")) == Approx(k.se).epsilon(1e-3));
   CHECK(number_after("KS p-value of speeds ") == Approx(p.mean).epsilon(1e-3));
 }
+TEST_CASE("an EDMD start says what it becomes: a glass from a lattice with vacancies, a "
+          "crystal from a full one, and warns above freezing",
+          "[cli]") {
+  // 3D, packing 0.6 (above freezing, 0.494): N = 4096 leaves 1228 of the 5324 fcc sites
+  // empty and compresses into a glass (Z near 44); N = 4000 fills its lattice, which stays
+  // an fcc crystal (Z near 15.5, Alder-Wainwright's solid branch)
+  Scratch s("start_kind");
+  const auto run = [&](const char* n, const char* packing) {
+    return cli_test::run({"run", "--engine", "edmd", "--dim", "3", "--n", n, "--packing",
+                          packing, "--until", "2", "--out", (s.path() / n).string() + packing,
+                          "--json"},
+                         s.path());
+  };
+  const auto glass = run("4096", "0.6");
+  REQUIRE(glass.code == 0);
+  CHECK(glass.err.find("compressed to 0.6: above freezing, with vacancies, it compresses into "
+                       "a glass") != std::string::npos);
+  CHECK(glass.err.find("packing 0.6 is above the freezing packing 0.494 of hard spheres in "
+                       "D = 3") != std::string::npos);
+  const auto crystal = run("4000", "0.6");
+  REQUIRE(crystal.code == 0);
+  CHECK(crystal.err.find("above freezing the full lattice stays a crystal") != std::string::npos);
+  CHECK(crystal.err.find("glass") == std::string::npos);
+  const auto z = [](const cli_test::Result& r) {
+    return json_number(cli_test::lines(r.out).back(), "Z");
+  };
+  CHECK(z(glass) > 30.0);    // the glass: far above the crystal at the same packing
+  CHECK(z(crystal) < 20.0);  // the fcc solid at 0.6: Z about 15.5
+  // below freezing: no warning
+  const auto fluid = run("4000", "0.3");
+  REQUIRE(fluid.code == 0);
+  CHECK(fluid.err.find("freezing packing") == std::string::npos);
+}
 #endif

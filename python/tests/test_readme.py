@@ -71,3 +71,18 @@ def test_readme_edmd_quick_commands_fill_their_lattice(cli, tmp_path):
                  "--out", str(tmp_path / f"d{dim}")]
         r = subprocess.run(short, capture_output=True, text=True, check=True)
         assert "vacancies" not in r.stderr, line
+
+
+def test_example_08_states_its_tagged_particles():
+    """examples/08-transport's README gives the tagged count main.cpp sets and the default
+    of analysis::TransportSettings (that of `run --transport` for DSMC)."""
+    root = pathlib.Path(__file__).resolve().parents[2]
+    main = (root / "examples" / "08-transport" / "main.cpp").read_text()
+    text = " ".join((root / "examples" / "08-transport" / "README.md").read_text().split())
+    settings = (root / "analysis" / "include" / "hypergas" / "analysis" /
+                "transport_recorder.hpp").read_text()
+    tagged = int(re.search(r"ts\.tagged = (\d+);", main).group(1))
+    default = int(re.search(r"int tagged = (\d+);", settings).group(1))
+    assert f"displacements of {tagged} tagged particles" in text
+    if tagged != default:
+        assert f"default to {default}" in text

@@ -257,14 +257,15 @@ const std::vector<TransportCoefficient>& HelfandRecorder::finish() {
     // for Green-Kubo (from the same stretch), with the same truncation error
     const auto helfand = [&](const std::vector<double>& c, const std::vector<double>& I) {
       return 0.5 * slope(mean_square(c, h), h, a, b) * scale +
-             (detail::extrapolated(I, cut, d) - I[cut]);
+             (detail::extrapolated(I, cut, P.factor) - I[cut]);
     };
     const auto [Ik, Ikj] = integral_of(g_kin, true, scale);
     const auto [Ic, Icj] = integral_of(g_col, true, scale);
     const auto [Ip, Ipj] = integral_of(g_pt, false, scale);
-    // each part to the same cut with its own tail, so that the parts add up to the total
+    // each part to the same cut with the total's tail factor, so that the parts add up to
+    // the total
     const auto part = [&](const std::vector<double>& I) {
-      return detail::extrapolated(I, cut, d);
+      return detail::extrapolated(I, cut, P.factor);
     };
     const auto point = [&](const std::vector<double>&, const std::vector<double>& I) {
       return part(I);

@@ -91,22 +91,21 @@ inline std::pair<double, double> increment_value(const std::vector<double>& c, s
 /// (helfand_recorder.cpp).
 ///
 /// I[k] is the running integral of the whole run at lag k, Ij[j][k] the same of error
-/// stretch j. The candidate cuts are k0 and on by factors of sqrt(2) up to k_max. At each,
-/// the statistical error s(k) is the standard error of the stretches' extrapolated values
-/// (below), and the
-/// drift d(k) = I[k] - I[k / 2] is the change of the running integral over the cut's last
-/// doubling. The part of the integral beyond the cut that the run did not see is estimated
-/// from the drift: a correlation that decays as t^(-p) beyond the cut leaves
-/// r(k) = d(k) / (2^(p - 1) - 1), with p = D / 2 the hydrodynamic long-time tail of a
-/// D-dimensional fluid (Alder & Wainwright, Phys. Rev. A 1, 18 (1970)): 2.41 d in 3D, d in
-/// 4D, 0.55 d in 5D, 0.33 d in 6D (2D, p = 1, where the tail integral diverges
-/// logarithmically until the periodic box cuts it, takes the 3D factor). A faster decay
-/// leaves less. The value is I[k_c] + r(k_c), the running integral with the remainder of
-/// that tail added (signed, from the same stretch for each stretch, so that the
-/// statistical error s is that of the extrapolated value), and the truncation error is
-/// |r(k_c)|, the whole correction: the tail's form is not measured. The drift is measured
-/// with noise, so the cut k_c is the candidate that minimises the stated error
-/// sqrt(s^2 + r^2) (s grows with the cut, r falls with it); reached says whether
+/// stretch j. The candidate cuts are k0 and on by factors of sqrt(2) up to k_max. At a cut k
+/// the drifts over the last two doublings, d1 = I[k/2] - I[k/4] and d2 = I[k] - I[k/2],
+/// give the decay of the running integral's increments, q = d2 / d1 per doubling. If they
+/// keep falling by q, the part of the integral beyond k that the run did not see is
+/// r = d2 q / (1 - q). A correlation that decays as t^(-p) has q = 2^(1 - p) exactly, and
+/// then r = d2 / (2^(p - 1) - 1); an exponential decay has q near 0 and leaves r near 0. The
+/// slowest decay a fluid has is the hydrodynamic long-time tail, p = D / 2 (Alder &
+/// Wainwright, Phys. Rev. A 1, 18 (1970)), so q is clamped to [0, 2^(1 - D/2)]: at most
+/// r = 2.41 d2 in 3D, d2 in 4D, 0.55 d2 in 5D, 0.33 d2 in 6D. 2D, whose tail integral
+/// diverges logarithmically until the periodic box cuts it off, takes the 3D bound. The
+/// value is I[k_c] + r(k_c). Each stretch is extrapolated with the whole run's q, so the
+/// statistical error s is that of the extrapolated value. The truncation error is
+/// |r(k_c)|, the whole correction, since the tail's form is measured only through q. The
+/// drift is measured with noise, so the cut k_c is the candidate that minimises the stated
+/// error sqrt(s^2 + r^2): s grows with the cut, r falls with it. reached says whether
 /// |r(k_c)| <= s(k_c), a plateau as far as the run can tell.
 struct Plateau {
   double value = std::numeric_limits<double>::quiet_NaN();
@@ -114,26 +113,31 @@ struct Plateau {
   double truncation_error = std::numeric_limits<double>::quiet_NaN();
   double error = std::numeric_limits<double>::quiet_NaN();
   double remainder = 0.0;  ///< r(k_c), included in value
+  double factor = 0.0;     ///< q / (1 - q) at k_c
   std::size_t cut = 0;
-  bool reached = false;          ///< the remainder is within the statistical error
+  bool reached = false;           ///< the remainder is within the statistical error
   std::vector<double> stretches;  ///< the stretches' extrapolated values at k_c
 };
 
-/// The factor from the drift over the last doubling to the remainder of a t^(-D/2) tail
-/// (Plateau's comment).
-inline double tail_factor(int dim) {
-  const double p = dim >= 3 ? 0.5 * dim : 1.5;
-  return 1.0 / (std::pow(2.0, p - 1.0) - 1.0);
+/// The largest decay of the increments per doubling, 2^(1 - p) with p = D/2 (3D's in 2D).
+inline double max_decay(int dim) { return std::pow(2.0, 1.0 - (dim >= 3 ? 0.5 * dim : 1.5)); }
+
+/// q / (1 - q) of the running integral I at cut k (Plateau's comment).
+inline double tail_factor(const std::vector<double>& I, std::size_t k, int dim) {
+  if (k < 4) return 0.0;
+  const double d1 = I[k / 2] - I[k / 4], d2 = I[k] - I[k / 2];
+  const double q = d1 != 0.0 ? std::clamp(d2 / d1, 0.0, max_decay(dim)) : 0.0;
+  return q / (1.0 - q);
 }
 
-/// A running integral I at cut k with the remainder of a t^(-D/2) tail added:
-/// I[k] + (I[k] - I[k / 2]) tail_factor(D) (Plateau's comment).
-inline double extrapolated(const std::vector<double>& I, std::size_t k, int dim) {
-  return I[k] + tail_factor(dim) * (I[k] - I[k / 2]);
+/// I[k] + f (I[k] - I[k / 2]): a running integral at cut k with the remainder of a tail
+/// whose increments fall as the whole run's (factor f = tail_factor of the run).
+inline double extrapolated(const std::vector<double>& I, std::size_t k, double f) {
+  return I[k] + f * (I[k] - I[k / 2]);
 }
 
 /// The plateau of the running integral I (Plateau's comment): candidate cuts from k0 to
-/// k_max, error stretches Ij, dimension D for the tail's power.
+/// k_max, error stretches Ij, dimension D for the slowest tail.
 inline Plateau plateau(const std::vector<double>& I, const std::vector<std::vector<double>>& Ij,
                        std::size_t k0, std::size_t k_max, int dim) {
   Plateau r;
@@ -142,12 +146,15 @@ inline Plateau plateau(const std::vector<double>& I, const std::vector<std::vect
   k0 = std::max<std::size_t>(1, std::min(k0, k_max));
   // the extrapolated values of the stretches at cut k
   const auto stretch_values = [&](std::size_t k) {
+    const double f = tail_factor(I, k, dim);
     std::vector<double> x;
-    for (const auto& s : Ij) x.push_back(extrapolated(s, k, dim));
+    for (const auto& s : Ij) x.push_back(extrapolated(s, k, f));
     return x;
   };
   const auto se_at = [&](std::size_t k) { return mean_se(stretch_values(k)).se; };
-  const auto remainder = [&](std::size_t k) { return extrapolated(I, k, dim) - I[k]; };
+  const auto remainder = [&](std::size_t k) {
+    return extrapolated(I, k, tail_factor(I, k, dim)) - I[k];
+  };
   std::size_t cut = std::max<std::size_t>(2, k0);
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t k = cut; k <= k_max;
@@ -157,8 +164,9 @@ inline Plateau plateau(const std::vector<double>& I, const std::vector<std::vect
   }
   cut = std::min(cut, k_max);
   r.cut = cut;
-  r.value = I[cut] + remainder(cut);
+  r.factor = tail_factor(I, cut, dim);
   r.remainder = remainder(cut);
+  r.value = I[cut] + r.remainder;
   r.stretches = stretch_values(cut);
   r.statistical_error = mean_se(r.stretches).se;
   r.truncation_error = std::fabs(r.remainder);

@@ -84,7 +84,7 @@ the fluxes, so the spacing of observations is free). At its first observation it
 the mean free time tau so far and installs the Helfand moments in the engine; dt and max_lag
 are in units of tau. ``finish()`` returns {name: {value, error, statistical_error,
 truncation_error, first_sonine, ratio, enskog, enskog_ratio, ...}} (each integral read at
-the plateau of its running integral, the t^(-D/2) remainder added and its size the
+the plateau of its running integral, the remainder of its tail added and its size the
 truncation error; error = sqrt(statistical^2 + truncation^2)) for viscosity (Einstein-Helfand), viscosity_green_kubo,
 viscosity_kinetic, _cross, _collisional, _kinetic_point, the same for
 thermal_conductivity, self_diffusion, self_diffusion_einstein (and in 3D

@@ -76,7 +76,7 @@ Table read(const fs::path& csv) {
 TEST_CASE("EDMD --transport: self-diffusion by the plateau rule equals the MSD slope, D = 2..6",
           "[cli][transport]") {
   // Each case: one run, the tagged particles' self-diffusion in transport.csv (Green-Kubo
-  // and Einstein at the plateau of their running integrals, the t^(-D/2) remainder added;
+  // and Einstein at the plateau of their running integrals, the tail's remainder added;
   // error = statistical (.) truncation) against the slope of the mean square displacement
   // of vacf.csv's 2000 particles over the second half of its lags,
   // D_msd = [msd(t2) - msd(t1)] / (2 D (t2 - t1)), an estimator with no cut at all. They

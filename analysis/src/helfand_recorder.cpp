@@ -225,7 +225,13 @@ const std::vector<TransportCoefficient>& HelfandRecorder::finish() {
   // over, not within the first few collisions), to two thirds of the lags (the
   // Einstein-Helfand slope is fitted over [k_c / 2, 3 k_c / 2]).
   const std::size_t K = corr_->lags() - 1;
-  const auto k0 = static_cast<std::size_t>(std::max(1.0, std::round(min_cut_tau / set_.dt)));
+  const auto k_least = static_cast<std::size_t>(std::max(1.0, std::round(min_cut_tau / set_.dt)));
+  // the first candidate: also at least `window` integral times of the correlation c (whose
+  // running integral is I), where an exponential decay has left e^-window of it and the
+  // remainder model (integrals.hpp) no longer overstates a fast decay
+  const auto first_cut = [&](const std::vector<double>& c, const std::vector<double>& I) {
+    return std::max(k_least, detail::auto_cut(c, I, h, set_.window));
+  };
   const std::size_t k_max = 2 * K / 3;
   // Running integrals of group g to each lag k, scaled, by the trapezoid rule: of interval
   // averages (increments), whose correlation c(l) is C smoothed by a triangle of half-width
@@ -250,7 +256,9 @@ const std::vector<TransportCoefficient>& HelfandRecorder::finish() {
   const auto flux = [&](const char* base, int g_tot, int g_kin, int g_col, int g_pt,
                         double scale, double ref, const enskog::Parts& f) {
     const auto [It, Itj] = integral_of(g_tot, true, scale);
-    const detail::Plateau P = detail::plateau(It, Itj, k0, k_max, d);
+    const std::vector<double> c_tot = corr_->mean(g_tot);
+    const detail::Plateau P =
+        detail::plateau(It, Itj, first_cut(c_tot, running_integral(c_tot, h)), k_max, d);
     const std::size_t cut = P.cut;
     const std::size_t a = std::max<std::size_t>(1, cut / 2), b = std::min(3 * cut / 2, K);
     // the slope sees the running integral around the cut; the tail beyond it is added as
@@ -314,6 +322,8 @@ const std::vector<TransportCoefficient>& HelfandRecorder::finish() {
   {
     const auto [Iv, Ivj] = integral_of(velocity, false, 1.0);
     const auto [Id, Idj] = integral_of(displacement, true, 1.0);
+    const std::vector<double> cv0 = corr_->mean(velocity);
+    const std::size_t k0 = first_cut(cv0, running_integral(cv0, h));
     const detail::Plateau Pv = detail::plateau(Iv, Ivj, k0, k_max, d);
     const detail::Plateau Pe = detail::plateau(Id, Idj, k0, k_max, d);
     const std::vector<double> cv = corr_->mean(velocity), cd = corr_->mean(displacement);

@@ -7,9 +7,9 @@
 // stress and from its point samples; Green-Kubo and Einstein self-diffusion. Each pair is
 // compared through its difference per error stretch (32 stretches: the difference's mean
 // over its standard error is Student t with 31 dof), at 5 se: a two-sided 2e-5 each, 2e-4
-// for the case's ten comparisons. The estimators differ in their truncation (the slope
-// between 2 and 4 cut times against the sum to the cut plus an exponential tail), which at
-// these run lengths is below a tenth of the difference's standard error.
+// for the case's ten comparisons. Both estimators are read at one cut with one tail
+// (the plateau rule, analysis/src/integrals.hpp): the slope is fitted over [k_c/2, 3k_c/2]
+// around it, the sum ends at it.
 //
 // Two engines, one gas (long). At low density (Z - 1 = 2^(D-1) eta g(sigma+) about 0.04:
 // eta = 0.04 / 2^(D-1), D = 2..6) the EDMD coefficients over their Enskog values (first
@@ -17,7 +17,8 @@
 // velocity-space engine's Boltzmann values over the first Sonine ones, at the same N (the
 // N-particle corrections of both engines are then the same to O(n)). Compared: viscosity
 // and thermal conductivity (Green-Kubo) and self-diffusion (Einstein), each within 4.5
-// combined se (t with 31 dof: two-sided 2e-4 each, 3e-3 for the 15 comparisons). Density
+// combined se (t with 31 dof: two-sided 2e-4 each, 3e-3 for the 15 comparisons; the EDMD
+// error includes its truncation error, a bound, which only lowers that probability). Density
 // corrections beyond Enskog at Z - 1 = 0.04 are below 0.5 % (Alder, Gass & Wainwright,
 // J. Chem. Phys. 53, 3813 (1970): eta / eta_E and D / D_E within a few per cent of 1 up to
 // V / V_0 = 3), well inside the 3 % errors of the comparison.
@@ -145,7 +146,10 @@ void two_engines(std::size_t n, double mean_free_times) {
                 << " +- " << x.enskog_ratio_error << ", DSMC " << bn << " / first Sonine = "
                 << y.ratio << " +- " << y.ratio_error);
     CHECK(std::fabs(x.enskog_ratio - y.ratio) <= 4.5 * se);
-    CHECK(x.enskog_ratio_error < 0.04);  // the comparison has power
+    // the comparison has power: the EDMD error includes the plateau rule's truncation
+    // error (integrals.hpp), which for these exponential decays is the remainder of the
+    // slowest (t^(-D/2)) tail allowed, 0.03-0.06 of the value at this run length
+    CHECK(x.enskog_ratio_error < 0.08);
   }
 }
 

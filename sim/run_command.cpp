@@ -144,10 +144,16 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume, bool quiet) {
   std::string lines;
   for (const auto& output : rec.outputs) output->report(lines, summary);
   fmt::print("{}", lines);
-  if (edmd)
-    fmt::print("  packing {}, Z = PV/NkT {} +- {}, collision rate {} +- {}, mean free time {}\n",
-               f("packing"), f("Z"), f("Z_error"), f("collision_rate"),
-               f("collision_rate_error"), f("mean_free_time"));
+  if (edmd) {
+    // an undefined Z (a sheared or granular gas: edmd::has_pressure_Z) has no error either
+    const std::string z =
+        std::isfinite(summary_number(summary, "Z"))
+            ? fmt::format("Z = PV/NkT {} +- {}", f("Z"), f("Z_error"))
+            : fmt::format("Z = PV/NkT undefined {}",
+                          o.shear_rate != 0.0 ? "under shear" : "in a granular gas");
+    fmt::print("  packing {}, {}, collision rate {} +- {}, mean free time {}\n", f("packing"),
+               z, f("collision_rate"), f("collision_rate_error"), f("mean_free_time"));
+  }
   std::string files;
   for (const auto& name : out.committed()) files += (files.empty() ? "" : ", ") + name;
   fmt::print("  wrote {}/: {}\n", out.dir().string(), files);

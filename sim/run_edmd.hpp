@@ -136,8 +136,8 @@ RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
 
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   const bool sheared = o.shear_rate != 0.0;
-  // no equilibrium pressure in a granular or a sheared gas
-  const double Z = granular || sheared ? nan : engine.pressure_Z();
+  // NaN where Z is undefined: a granular or a sheared gas (edmd::has_pressure_Z)
+  const double Z = engine.pressure_Z_or_nan();
   finish_outputs(rec.outputs, st);
   RunFacts f;
   f.dim = D;
@@ -161,8 +161,8 @@ RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
       {"collision_rate", engine.collision_rate()},
       {"mean_free_time", engine.mean_free_time()},
       {"equilibration_time", t_eq},
-      {"kT", engine.temperature()},
-      {"contact_value_from_Z", granular ? nan : edmd::contact_value(D, Z, engine.packing())},
+      {"kT", engine.temperature()},  // of the peculiar velocities under shear
+      {"contact_value_from_Z", edmd::contact_value(D, Z, engine.packing())},  // NaN with Z
       {"lattice_sites", sites},
       {"vacancies", vacancies},
   };
@@ -171,6 +171,9 @@ RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
     // its largest deviation
     keys.emplace_back("energy_balance_residual", engine.energy_balance_residual());
     keys.emplace_back("ideal_collision_rate", engine.lees_edwards().nu0);
+    // the flow's share of the lab-frame kinetic energy, which kT leaves out
+    keys.emplace_back("streaming_kinetic_energy",
+                      engine.streaming_kinetic_energy() / static_cast<double>(engine.size()));
   }
   if (granular) {
     // Haff's t0 of the Enskog gas at the initial temperature (sigma sqrt(m/kT0)), with the

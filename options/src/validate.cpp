@@ -190,6 +190,9 @@ void validate_shear(const RunOptions& o) {
     reject("--thermostat isokinetic holds an elastic gas: a granular sheared gas reaches its "
            "steady state, where viscous heating balances the collisional loss, without one; "
            "leave it out");
+  if (edmd && o.trajectory_every > 0.0)
+    reject("--trajectory-every cannot be combined with --shear-rate in EDMD: an H5MD box is "
+           "periodic, without the Lees-Edwards offset that the sheared images need");
   if (o.transport)
     reject("--transport measures the gas at equilibrium: leave out --shear-rate (the sheared "
            "gas's viscosity is in the summary, viscosity_ratio)");

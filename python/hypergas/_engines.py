@@ -57,6 +57,10 @@ class _Engine:
         if callback is not None and not callable(callback):
             raise TypeError(f"callback must be callable, got {type(callback).__name__}")
         writer = None
+        if trajectory is not None and getattr(self, "_shear_rate", 0.0) != 0.0:
+            raise ValueError("trajectory= cannot be combined with shear_rate in EDMD: an H5MD "
+                             "box is periodic, without the Lees-Edwards offset that the "
+                             "sheared images need")
         if trajectory is not None:
             if not hasattr(_hypergas, "TrajectoryRecorder"):
                 raise RuntimeError("trajectory= needs a hypergas built with HDF5 (libhdf5-dev)")
@@ -306,6 +310,7 @@ class EDMD(_Engine):
         given = _given(EDMD, args, kwargs)
         super().__init__(_hypergas.make_edmd(**given))
         self.seed = int(given.get("seed", _DEFAULTS["edmd"]["seed"]))
+        self._shear_rate = float(given.get("shear_rate", 0.0))
 
     @classmethod
     def from_state(cls, positions, velocities, *, box, **kwargs):
@@ -322,6 +327,7 @@ class EDMD(_Engine):
         given = {k: v for k, v in kwargs.items() if v is not None}
         _Engine.__init__(self, _hypergas.make_edmd_from(positions, velocities, box, **given))
         self.seed = int(given.get("seed", _DEFAULTS["edmd"]["seed"]))
+        self._shear_rate = float(given.get("shear_rate", 0.0))
         return self
 
     @property
@@ -358,14 +364,17 @@ class EDMD(_Engine):
 
     @property
     def temperature(self):
-        """Kinetic temperature 2 E_kin / (D n) (energy units)."""
+        """Kinetic temperature sum m c^2 / (D n) (energy units) of the peculiar velocities:
+        under shear c = v - a (y - L/2) e_x, the lab velocities less the streaming profile,
+        as the command's kT and moments.csv; otherwise c = v."""
         return self._observable("temperature")
 
     @property
     def pressure_Z(self):
         """Reduced pressure Z = PV/(N kT) from the collision virial since the last
         reset_observables() (or the start); NaN while the gas is granular (restitution
-        below 1: no equilibrium)."""
+        below 1) or sheared: neither is in equilibrium (the command's summary says the
+        same)."""
         return self._observable("pressure_Z")
 
     @property

@@ -95,6 +95,8 @@ class EdmdHandle : public EngineHandle {
   virtual double packing() const = 0;
   virtual double temperature() const = 0;
   virtual double pressure_Z() const = 0;
+  /// pressure_Z() where defined (elastic, not sheared: edmd::has_pressure_Z), NaN otherwise.
+  virtual double pressure_Z_or_nan() const = 0;
   virtual double collision_rate() const = 0;
   virtual double mean_free_time() const = 0;
   virtual void reset_observables() = 0;

@@ -136,6 +136,7 @@ class Edmd final : public Common<Engine, EdmdHandle> {
   double packing() const override { return e_.packing(); }
   double temperature() const override { return e_.temperature(); }
   double pressure_Z() const override { return e_.pressure_Z(); }
+  double pressure_Z_or_nan() const override { return e_.pressure_Z_or_nan(); }
   double collision_rate() const override { return e_.collision_rate(); }
   double mean_free_time() const override { return e_.mean_free_time(); }
   void reset_observables() override { e_.reset_observables(); }

@@ -143,3 +143,55 @@ def test_example_13_runs(tmp_path, cli):
     assert worst < 5.0, r.stdout  # 4 cases, each within 5 se: false failure below 3e-3
     assert "tails: 3D hard spheres at a = 2, 3 frames of 20000 particles" in r.stdout
     assert "granular steady state" in r.stdout
+
+
+def test_edmd_sheared_temperature_is_peculiar_and_z_undefined(tmp_path):
+    """Under Lees-Edwards shear every temperature is that of the peculiar velocities
+    c = v - a (y - L/2) e_x (edmd/lees_edwards.hpp), the lab velocities of ``velocities``
+    less the streaming profile: ``temperature`` equals it to round-off (an identity of the
+    engine's sums), while the lab-frame value is larger by the profile's a^2 L^2 / (12 D)
+    (24 at packing 0.2, a = 0.5 per ideal collision time, N = 4000). Z = PV/(N kT) is an
+    equilibrium measurement: NaN, as the command's summary says, and a trajectory (a
+    periodic H5MD box, no Lees-Edwards offset) is refused."""
+    eta, a = 0.2, 0.5
+    e = hg.EDMD(dim=3, n=4000, packing=eta, seed=5, shear_rate=a, thermostat="isokinetic")
+    e.run(3.0)
+    x, v = np.array(e.positions), np.array(e.velocities)
+    rate = a * 3 * 2**3 * eta / math.sqrt(math.pi)  # a nu0 at kT0 = 1 (unit mass)
+    c = v.copy()
+    c[:, 0] -= rate * (x[:, 1] - e.box_side / 2)
+    peculiar = (c**2).sum() / (3 * e.n)
+    lab = (v**2).sum() / (3 * e.n)
+    assert e.temperature == pytest.approx(peculiar, rel=1e-10)
+    assert e.temperature == pytest.approx(1.0, abs=0.05)  # held by the thermostat
+    assert lab - peculiar == pytest.approx(rate**2 * e.box_side**2 / 36, rel=0.05)
+    assert math.isnan(e.pressure_Z)
+    with pytest.raises(ValueError, match="cannot be combined with shear_rate"):
+        e.run(4.0, trajectory=tmp_path / "t.h5")
+
+
+def test_edmd_sheared_summary_kt_is_moments_kt(tmp_path, cli):
+    """The command's summary kT is the peculiar temperature that moments.csv's last row
+    holds (the same sum at the same instant: equal to round-off), the streaming energy has
+    its own key (a^2 L^2 / 24 per particle within the 5 % of a finite gas's fluctuating
+    heights), and stdout says that Z is undefined rather than quoting an error for it."""
+    import csv
+    import json
+    import subprocess
+    eta, a = 0.2, 0.5
+    r = subprocess.run([cli, "run", "--engine", "edmd", "--dim", "3", "--n", "4000",
+                        "--packing", str(eta), "--shear-rate", str(a), "--thermostat",
+                        "isokinetic", "--until", "3", "--out", str(tmp_path), "--json"],
+                       capture_output=True, text=True, check=True)
+    s = json.loads(r.stdout.strip().splitlines()[-1])
+    with open(tmp_path / "moments.csv") as f:
+        last = list(csv.DictReader(f))[-1]
+    assert s["kT"] == pytest.approx(float(last["kT"]), rel=1e-9)
+    assert s["kT"] == pytest.approx(1.0, abs=0.05)
+    rate = a * s["ideal_collision_rate"]
+    L = (4000 * math.pi / 6 / eta) ** (1 / 3)
+    assert s["streaming_kinetic_energy"] == pytest.approx(rate**2 * L**2 / 24, rel=0.05)
+    assert s["Z"] is None and s["Z_error"] is None
+    z_line = [l for l in r.stdout.splitlines() if "PV/NkT" in l]
+    assert z_line and "undefined under shear" in z_line[0] and "+-" not in z_line[0].split(
+        "collision rate")[0]

@@ -5,7 +5,8 @@
 // interval has its own Z_k = 1 + dW / (D N kT dt) and rate_k = 2 dC / (N dt), whose mean
 // is the window's value. Their standard errors come from block averages
 // (analysis/estimates.hpp): `blocks` blocks of consecutive intervals, longer than the
-// correlation time of the pressure (a few mean free times) at the default sampling.
+// correlation time of the pressure (a few mean free times) at the default sampling. Under
+// shear Z is undefined (edmd::has_pressure_Z) and so is its error: Z_error is null.
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "hypergas/analysis/estimates.hpp"
 #include "hypergas/analysis/sample.hpp"
 #include "hypergas/checkpoint.hpp"
+#include "hypergas/edmd/observables.hpp"
 #include "output.hpp"
 
 namespace hypergas::cli {
@@ -59,18 +61,21 @@ class Intervals final : public Observer {
 
 class PressureOutput final : public Output {
  public:
-  explicit PressureOutput(const RunSetup&) {}
+  explicit PressureOutput(const RunSetup& setup)
+      : z_defined_(edmd::has_pressure_Z(setup.options.restitution, setup.options.shear_rate)) {}
 
   Observer* sampler() override { return &intervals_; }
   void save(checkpoint::Writer& w) const override { intervals_.save(w); }
   void load(checkpoint::Reader& r) override { intervals_.load(r); }
   void write(OutputDir&) const override {}
   void summarize(analysis::JsonObject& s) const override {
-    s.emplace_back("Z_error", intervals_.z().se);
+    s.emplace_back("Z_error",
+                   z_defined_ ? intervals_.z().se : std::numeric_limits<double>::quiet_NaN());
     s.emplace_back("collision_rate_error", intervals_.rate().se);
   }
 
  private:
+  bool z_defined_;
   Intervals intervals_;
 };
 

@@ -298,6 +298,9 @@ TEST_CASE("run: granular options out of range or in the wrong combination are re
                   "--structure measures the fluid at equilibrium");
   expect_rejected({"run", "--engine", "edmd", "--shear-rate", "1", "--dim", "1"},
                   "--shear-rate needs --dim >= 2");
+  // a periodic H5MD box has no Lees-Edwards offset: a sheared EDMD trajectory is refused
+  expect_rejected({"run", "--engine", "edmd", "--shear-rate", "1", "--trajectory-every", "1"},
+                  "--trajectory-every cannot be combined with --shear-rate in EDMD");
   expect_rejected({"run", "--restitution", "0.5", "--drive", "white-noise", "--drive-dt", "0"},
                   "--drive-dt must be a finite interval > 0 and at most 1");
   expect_rejected({"run", "--engine", "edmd", "--drive", "white-noise", "--restitution", "0.5"},

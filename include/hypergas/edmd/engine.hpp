@@ -27,13 +27,15 @@
 // receding by more than round-off (keep_receding), so that alpha = 0 cannot make the same
 // pair collide again at the same instant without end. A cooling gas has no temperature to
 // measure a pressure against: pressure_Z and the Helfand tally (contacts()) refuse
-// alpha < 1 with InvalidInput; collision_rate, mean_free_time and temperature stay
-// measured quantities (means over the window, and the current kinetic temperature).
+// alpha < 1 with InvalidInput (pressure_Z a sheared gas too); collision_rate,
+// mean_free_time and temperature stay measured quantities (means over the window, and the
+// current kinetic temperature).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -186,11 +188,34 @@ class Engine {
   double box_side() const { return s_.L; }
   /// Packing fraction at the current diameters.
   double packing() const { return s_.packing(); }
-  /// Kinetic temperature kT = sum m v^2 / (D N) (energy units); in a granular gas the
-  /// granular temperature, falling with time.
+  /// Kinetic temperature kT = sum m c^2 / (D N) (energy units) of the peculiar velocities
+  /// c: under shear c = v - u(y) relative to the streaming profile u = a (y - L/2) e_x
+  /// (lees_edwards.hpp), otherwise c = v; in a granular gas the granular temperature,
+  /// falling with time.
   double temperature() const {
-    return 2.0 * kinetic_energy() / (D * static_cast<double>(size()));
+    return 2.0 * peculiar_kinetic_energy() / (D * static_cast<double>(size()));
   }
+  /// sum m c^2 / 2 of the peculiar velocities c (temperature()); kinetic_energy() without
+  /// shear.
+  double peculiar_kinetic_energy() const {
+    if (!le_.on()) return kinetic_energy();
+    return 0.5 * kinetic_tensor(s_.now).trace();
+  }
+  /// Kinetic energy of the streaming profile at the particles' heights, sum m u(y_i)^2 / 2
+  /// (a^2 L^2 / 24 per particle of unit mass in a uniform gas); 0 without shear.
+  double streaming_kinetic_energy() const {
+    if (!le_.on()) return 0.0;
+    constexpr int Y = LeesEdwards<D>::y;
+    double e = 0.0;
+    for (std::size_t i = 0; i < size(); ++i) {
+      const double y =
+          s_.p.position(i)[Y] + s_.p.velocity(i)[Y] * (s_.now - s_.p.local_time(i));
+      const double u = le_.stream(y);
+      e += s_.p.mass(i) * u * u;
+    }
+    return 0.5 * e;
+  }
+  /// sum m v^2 / 2 of the lab velocities v (the streaming flow included under shear).
   double kinetic_energy() const {
     double e = 0.0;
     for (std::size_t i = 0; i < size(); ++i) e += s_.p.mass(i) * s_.p.velocity(i).squaredNorm();
@@ -205,13 +230,24 @@ class Engine {
   void reset_observables() { win_.reset(s_.now, s_.ncoll); }
   /// Collisions in the current window.
   std::uint64_t window_collisions() const { return win_.collisions(s_.ncoll); }
+  /// Whether Z = PV/(N kT) is defined for the gas as it runs now (has_pressure_Z,
+  /// observables.hpp: elastic and not sheared).
+  bool pressure_Z_defined() const { return has_pressure_Z(alpha_, le_.rate); }
   /// Reduced pressure Z = PV/(N kT) = 1 + sum_coll r_ij . dp_i / (D N kT t) over the window.
-  /// An equilibrium measurement: throws InvalidInput while the restitution is below 1.
+  /// An equilibrium measurement: throws InvalidInput while the restitution is below 1 or
+  /// the gas is sheared (pressure_Z_defined()).
   double pressure_Z() const {
     if (alpha_ < 1.0)
       throw InvalidInput("pressure_Z: a granular gas (restitution " + std::to_string(alpha_) +
                          " < 1) cools; Z = PV/(N kT) needs equilibrium");
+    if (!pressure_Z_defined())
+      throw InvalidInput("pressure_Z: a sheared gas is not in equilibrium; its pressure is "
+                         "the tensor of the shear flow, not Z = PV/(N kT)");
     return win_.pressure_Z(D, size(), temperature(), s_.now);
+  }
+  /// pressure_Z() where pressure_Z_defined(), NaN otherwise.
+  double pressure_Z_or_nan() const {
+    return pressure_Z_defined() ? pressure_Z() : std::numeric_limits<double>::quiet_NaN();
   }
   /// Collisions per particle per unit time in the window (2 per collision); in a cooling
   /// granular gas the mean over the window.

@@ -52,6 +52,15 @@ struct MeasurementWindow {
   }
 };
 
+/// Whether the reduced pressure Z = PV/(N kT) is defined for a gas of restitution alpha
+/// under a shear rate `shear_rate` (any units; 0: none): only an elastic gas at rest is in
+/// equilibrium. A granular gas cools, and a sheared one has a pressure tensor of the flow
+/// (the shear stress, the normal stress differences) and no equilibrium pressure. The one
+/// rule for the engine (Engine::pressure_Z_defined), the command and Python.
+inline bool has_pressure_Z(double alpha, double shear_rate) {
+  return alpha >= 1.0 && shear_rate == 0.0;
+}
+
 /// Collision rate per particle (per unit time) implied by Z through (*), for diameter sigma,
 /// mass m and temperature kT (equal masses).
 inline double rate_from_Z(int D, double Z, double sigma = 1.0, double m = 1.0, double kT = 1.0) {

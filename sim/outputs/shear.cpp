@@ -13,8 +13,9 @@
 // a (T/T0)^(-a_m/2), a_m the model's rate exponent), then each component P_ij / p for
 // i <= j followed by its standard error over the particles (P_xx, P_xx_err, P_xy,
 // P_xy_err, ...; axes x, y, z, u, v, w; the flow is along x, its gradient along y).
-// P = sum m V V^T / (N - 1) and p = tr P / D = kT, the engine's temperature; V are the
-// peculiar velocities (those of the frame moving with the flow).
+// DSMC: P = sum m V V^T / (N - 1) and p = tr P / D = kT, the engine's temperature; V are
+// the peculiar velocities (those of the frame moving with the flow). EDMD: p = tr P / D of
+// the interval's whole tensor, kinetic and collisional, not n kT.
 //
 // Summary keys, from the steady state: the rows of the second half of the run
 // (time >= until / 2), their means and standard errors from 10 blocks (blocks longer than
@@ -29,10 +30,14 @@
 //     mean collision time at T0 (a growth with viscous heating, 0 in a granular steady state),
 //   temperature_ratio (--restitution < 1): T / T0 of the granular steady state;
 // each with `_error`.
+//
+// rheology.png (scripts/run/shear.gp): -P_xy / p, the normal stress differences and T / T0
+// against real_time, with the steady state's means of the same rows as the summary.
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "../output_dir.hpp"
@@ -44,6 +49,8 @@
 #include "output.hpp"
 #include "../run_summary.hpp"
 #include <fmt/core.h>
+
+#include "plot_shear_gp.hpp"  // generated from scripts/run/shear.gp
 
 namespace hypergas::cli {
 
@@ -59,6 +66,7 @@ class ShearOutput final : public Output {
         isokinetic_(options::thermostat_kind(s.options.thermostat) ==
                     dsmc::Thermostat::isokinetic),
         granular_(s.options.restitution != 1.0),
+        edmd_(s.engine == registry::EngineKind::edmd),
         dim_(s.options.dim),
         tensor_(s.options.dim, s.options.shear_rate, law(s).exponent) {
     eta0_ = analysis::first_sonine(law(s), s.options.dim)[0];
@@ -83,17 +91,9 @@ class ShearOutput final : public Output {
     s.emplace_back("shear_rate", rate_);
     s.emplace_back("thermostat", std::string(isokinetic_ ? "isokinetic" : "none"));
     const auto& rows = tensor_.rows();
-    std::size_t b = 0;
-    while (b < rows.size() && rows[b][0] < 0.5 * until_) ++b;
-    const std::size_t e = rows.size();
-    const bool enough = e - b >= 2 * shear_blocks;
+    const std::size_t b = steady_begin(), e = rows.size();
     const auto put = [&](const std::string& key, auto&& value_of) {
-      analysis::MeanSe m;
-      if (enough) {
-        std::vector<double> y;
-        for (std::size_t i = b; i < e; ++i) y.push_back(value_of(rows[i]));
-        m = analysis::block_average(y, 0, y.size(), shear_blocks);
-      }
+      const analysis::MeanSe m = steady(value_of);
       s.emplace_back(key, m.mean);
       s.emplace_back(key + "_error", m.se);
     };
@@ -110,7 +110,7 @@ class ShearOutput final : public Output {
     } else {
       // d ln T / d real_time: each block's increments of ln T over those of real time
       analysis::MeanSe h;
-      if (enough)
+      if (e - b >= 2 * shear_blocks)
         h = analysis::over_blocks(b, e - 1, shear_blocks, [&](std::size_t i, std::size_t j) {
           return std::log(rows[j][2] / rows[i][2]) / (rows[j][1] - rows[i][1]);
         });
@@ -136,13 +136,54 @@ class ShearOutput final : public Output {
                         pm("shear_stress"), pm("normal_stress_xx"), pm("normal_stress_yy"),
                         pm("viscosity_ratio"));
   }
+  /// rheology.png (scripts/run/shear.gp), after the variables it reads: the steady state's
+  /// means it draws are the summary's (steady()).
+  std::string_view plot() const override {
+    const std::size_t xy = tensor_.column(0, 1), xx = tensor_.column(0, 0),
+                      yy = tensor_.column(1, 1);
+    const double n2 =
+        dim_ >= 3 ? steady([&](const auto& r) { return r[yy] - r[tensor_.column(2, 2)]; }).mean
+                  : std::numeric_limits<double>::quiet_NaN();
+    const auto number = [](double x) {
+      return std::isfinite(x) ? fmt::format("{:.17g}", x) : std::string("NaN");
+    };
+    script_ = fmt::format(
+        "shear_dim = {}\nshear_errors = {}\nshear_time_unit = \"{}\"\nshear_from = {}\n"
+        "shear_stress = {}\nshear_n1 = {}\nshear_n2 = {}\n",
+        dim_, edmd_ ? 0 : 1,
+        edmd_ ? "ideal-gas mean collision times at T0" : "mean collision times at T0",
+        number(0.5 * until_), number(steady([&](const auto& r) { return r[xy]; }).mean),
+        number(steady([&](const auto& r) { return r[xx] - r[yy]; }).mean), number(n2));
+    script_ += embedded::plot_shear_gp;
+    return script_;
+  }
 
  private:
+  /// The first row of the steady state: the second half of the run (time >= until / 2).
+  std::size_t steady_begin() const {
+    const auto& rows = tensor_.rows();
+    std::size_t b = 0;
+    while (b < rows.size() && rows[b][0] < 0.5 * until_) ++b;
+    return b;
+  }
+  /// The steady state's mean of value_of(row) and its standard error from shear_blocks
+  /// blocks; NaN with fewer than 2 shear_blocks rows.
+  template <class F>
+  analysis::MeanSe steady(F&& value_of) const {
+    const auto& rows = tensor_.rows();
+    const std::size_t b = steady_begin(), e = rows.size();
+    if (e - b < 2 * shear_blocks) return {};
+    std::vector<double> y;
+    for (std::size_t i = b; i < e; ++i) y.push_back(value_of(rows[i]));
+    return analysis::block_average(y, 0, y.size(), shear_blocks);
+  }
+
   double until_, rate_;
-  bool isokinetic_, granular_;
+  bool isokinetic_, granular_, edmd_;
   int dim_;
   analysis::PressureTensorRecorder tensor_;
   double eta0_ = 1.0;
+  mutable std::string script_;  // plot()'s text
 };
 
 }  // namespace

@@ -806,4 +806,81 @@ TEST_CASE("an EDMD start says what it becomes: a glass from a lattice with vacan
   REQUIRE(fluid.code == 0);
   CHECK(fluid.err.find("freezing packing") == std::string::npos);
 }
+
+// The rheology plot of a sheared run (--shear-rate, sim/outputs/shear.cpp,
+// scripts/run/shear.gp). Both engines: plot.gp sets the shear piece's variables from the
+// run (the steady state's means equal the summary's), the run draws rheology.png without a
+// word from gnuplot, and `gnuplot plot.gp` in the folder draws it again. DSMC 3D rows have
+// the particles' standard errors and a P_zz; EDMD 2D rows have empty _err fields and no z
+// axis, which the script must not read.
+namespace {
+
+/// The value of `name = value` in a gnuplot script, as a number (NaN for "NaN").
+double gp_number(const std::string& script, const std::string& name) {
+  const std::string k = "\n" + name + " = ";
+  const auto pos = script.find(k);
+  INFO("variable " << name);
+  REQUIRE(pos != std::string::npos);
+  return std::strtod(script.c_str() + pos + k.size(), nullptr);
+}
+
+/// Runs the sheared case `args`, then checks its plot script and rheology.png.
+void check_rheology_plot(const std::vector<std::string>& args, int dim, bool errors) {
+  Scratch s("rheology");
+  const auto out = s.path() / "out";
+  std::vector<std::string> a = args;
+  a.insert(a.end(), {"--out", out.string()});
+  const auto r = cli_test::run(a, s.path());
+  INFO("stderr: " << r.err << "\nstdout: " << r.out);
+  REQUIRE(r.code == 0);
+  REQUIRE(cli_test::fs::exists(out / "pressure_tensor.csv"));
+  // gnuplot's stderr is the run's: it said nothing, and did not fail
+  CHECK(r.err.find("gnuplot") == std::string::npos);
+  CHECK(r.err.find("warning") == std::string::npos);
+  CHECK(cli_test::fs::exists(out / "rheology.png"));
+  CHECK(cli_test::fs::file_size(out / "rheology.png") > 0);
+
+  const std::string gp = cli_test::slurp(out / "plot.gp");
+  CHECK(gp.find("set output 'rheology.png'") != std::string::npos);
+  CHECK(gp_number(gp, "shear_dim") == dim);
+  CHECK(gp_number(gp, "shear_errors") == (errors ? 1 : 0));
+  // the steady state's lines are the summary's means over the second half
+  const std::string summary = cli_test::slurp(out / "summary.json");
+  CHECK(gp_number(gp, "shear_from") == 0.5 * json_number(summary, "time"));
+  const double tau = json_number(summary, "shear_stress");
+  REQUIRE(std::isfinite(tau));
+  CHECK(gp_number(gp, "shear_stress") == tau);
+  const double n1 = json_number(summary, "normal_stress_xx") -
+                    json_number(summary, "normal_stress_yy");
+  CHECK(gp_number(gp, "shear_n1") == Approx(n1).margin(1e-12));
+  CHECK(std::isfinite(gp_number(gp, "shear_n2")) == (dim >= 3));
+
+  // the script written beside the PNGs draws them again, gnuplot silent
+  cli_test::fs::remove(out / "rheology.png");
+  cli_test::Spawn how;
+  how.program = "/usr/bin/env";
+  how.io = s.path();  // the captured output beside the folder, not in it
+  const auto g = cli_test::Child({"gnuplot", "plot.gp"}, out, how).wait();
+  INFO("gnuplot stderr: " << g.err);
+  CHECK(g.code == 0);
+  CHECK(g.err.empty());
+  CHECK(cli_test::fs::exists(out / "rheology.png"));
+}
+
+}  // namespace
+
+TEST_CASE("a sheared run draws rheology.png from plot.gp, both engines", "[cli]") {
+  SECTION("dsmc, 3D, no thermostat: standard errors and a z axis") {
+    check_rheology_plot({"run", "--engine", "dsmc", "--dim", "3", "--n", "2000",
+                         "--shear-rate", "1", "--until", "20", "--every", "0.5"},
+                        3, true);
+  }
+  SECTION("edmd, 2D, isokinetic: empty _err fields, no z axis") {
+    check_rheology_plot({"run", "--engine", "edmd", "--dim", "2", "--n", "1000", "--packing",
+                         "0.05", "--shear-rate", "1", "--thermostat", "isokinetic", "--until",
+                         "100"},
+                        2, false);
+  }
+}
+
 #endif

@@ -7,6 +7,8 @@
 #   transport_edmd.gp   transport.png (EDMD --transport)
 #   structure.gp        structure.png (EDMD --structure)
 #   histograms.gp       speed_histograms.png (--histogram-every)
+#   shear.gp            rheology.png (--shear-rate)
+# Each piece leaves the axes linear as it found them.
 # By hand: cd RUN && cat plot_run.gp run/moments.gp run/vacf.gp | gnuplot
 # Reads the CSV files by column name (gnuplot >= 5.0).
 set terminal pngcairo size 900,600 font ',11'

@@ -7,7 +7,6 @@
 # The command sets before it: shear_dim, shear_errors (1: the _err columns are filled),
 # shear_time_unit, shear_from, shear_stress, shear_n1, shear_n2 (NaN: no steady state).
 set output 'rheology.png'
-unset logscale  # a piece before may leave one set
 set multiplot layout 3,1 title run_title
 set xlabel sprintf('real time (%s)', shear_time_unit)
 set key top right opaque box

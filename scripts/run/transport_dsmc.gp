@@ -13,3 +13,4 @@ plot 'correlations.csv' using 'time':'viscosity' with lines lw 2 title 'stress (
      '' using 'time':'thermal_conductivity_sonine' with lines dt 2 lc 2 title 'first Sonine', \
      '' using 'time':'self_diffusion' with lines lw 2 title 'tagged velocity (self-diffusion)', \
      '' using 'time':'self_diffusion_sonine' with lines dt 2 lc 3 title 'first Sonine'
+unset logscale y

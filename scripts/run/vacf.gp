@@ -8,3 +8,4 @@ c0 = STATS_max
 plot 'vacf.csv' using 'time':(column('vacf')/c0) with linespoints title '<v(0).v(t)>', \
      '' using 'time':(column('vacf') < 0 ? -column('vacf')/c0 : 1/0) with points \
      title 'negative values (abs)'
+unset logscale xy

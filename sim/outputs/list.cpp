@@ -28,7 +28,7 @@ const auto kinds = std::to_array<const OutputKind*>({
     &outputs::helfand,    // transport.csv, correlations.csv (EDMD --transport)
     &outputs::structure,  // rdf.csv, structure_factor.csv (EDMD --structure)
     &outputs::histograms, // speed_histograms.csv (--histogram-every)
-    &outputs::shear,      // pressure_tensor.csv (DSMC --shear-rate)
+    &outputs::shear,      // pressure_tensor.csv, rheology.png (--shear-rate)
 #ifdef HYPERGAS_H5MD
     &outputs::trajectory, // trajectory.h5 (--trajectory-every)
 #endif

@@ -62,7 +62,7 @@ RunOptions scene_run(const SceneOptions& s, int d) {
   return options::make(registry::EngineKind::dsmc, [&](RunOptions& o) {
     o.dim = d;
     o.model = dsmc::HardSpheres::name;
-    o.init = registry::name(InitialState::delta);
+    o.init = InitialState::delta;
     o.n = s.n;
     o.seed = Rng(s.seed).split(static_cast<std::uint64_t>(d))();
     o.until = d == 1 ? until_factor_1d * s.until : s.until;

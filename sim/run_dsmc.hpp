@@ -79,7 +79,7 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
     Conserved<Engine::dim> c0;
     {
       const SetupLine line(fmt::format("dsmc: setting up {} particles ({} velocities)", o.n,
-                                       o.init),
+                                       registry::name(o.init)),
                            progress && !ctx.resume);
       start_engine(engine, cfg, ctx, st0, c0, rec.outputs, o);
     }
@@ -111,7 +111,7 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
   // report (the isokinetic thermostat holds it: its drift is reported)
   const bool energy_held =
       o.restitution == 1.0 &&
-      (o.shear_rate == 0.0 || options::thermostat_kind(o.thermostat) == dsmc::Thermostat::isokinetic);
+      (o.shear_rate == 0.0 || o.thermostat == dsmc::Thermostat::isokinetic);
   f.energy_rel_drift = !energy_held ? std::numeric_limits<double>::quiet_NaN()
                                             : *std::max_element(drift_e.begin(), drift_e.end());
   f.momentum_drift = *std::max_element(drift_p.begin(), drift_p.end());
@@ -127,7 +127,7 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
   const double ks_se = k == 1 ? 0.0 : ks_se_k;
   analysis::JsonObject keys{{"replicas", std::int64_t{k}},
                             {"threads", std::int64_t{o.threads}},
-                            {"scheme", o.scheme}};
+                            {"scheme", std::string(registry::name(o.scheme))}};
   if (cfg.scheme == dsmc::Scheme::ntc) keys.emplace_back("dt", cfg.dt);
   if (cfg.scheme == dsmc::Scheme::lanes) {
     const std::uint32_t m = dsmc::detail::lane_size_of(cfg, Engine::stride);

@@ -26,12 +26,7 @@ constexpr std::string_view mean_free_time_unit =
     "dsmc: equilibrium mean collision times; edmd: mean free times measured in the "
     "equilibration";
 
-void check_engine(std::string_view v) { (void)registry::engine(v); }
 void check_model(std::string_view v) { (void)registry::model(v); }
-void check_init(std::string_view v) { (void)registry::initial_state(v); }
-void check_drive(std::string_view v) { (void)drive_kind(v); }
-void check_thermostat(std::string_view v) { (void)thermostat_kind(v); }
-void check_scheme(std::string_view v) { (void)registry::scheme(v); }
 std::string schemes_help() { return registry::describe(registry::schemes); }
 void check_duration(std::string_view v) { (void)parse_duration("--checkpoint-wall", std::string(v)); }
 std::string engines_help() { return registry::describe(registry::engines); }
@@ -47,18 +42,47 @@ std::string jamming_help() {
                      fmt::join(v, ", "));
 }
 
+/// The named choices of Field: parse(name) throws InvalidInput naming the known names.
+template <class T>
+struct Named : std::false_type {};
+template <>
+struct Named<registry::EngineKind> : std::true_type {
+  static registry::EngineKind parse(std::string_view v) { return registry::engine(v); }
+  static std::string_view name(registry::EngineKind e) { return registry::name(e); }
+};
+template <>
+struct Named<dsmc::Scheme> : std::true_type {
+  static dsmc::Scheme parse(std::string_view v) { return registry::scheme(v); }
+  static std::string_view name(dsmc::Scheme s) { return registry::name(s); }
+};
+template <>
+struct Named<InitialState> : std::true_type {
+  static InitialState parse(std::string_view v) { return registry::initial_state(v); }
+  static std::string_view name(InitialState s) { return registry::name(s); }
+};
+template <>
+struct Named<dsmc::Drive> : std::true_type {
+  static dsmc::Drive parse(std::string_view v) { return drive_kind(v); }
+  static std::string_view name(dsmc::Drive d) { return drive_name(d); }
+};
+template <>
+struct Named<dsmc::Thermostat> : std::true_type {
+  static dsmc::Thermostat parse(std::string_view v) { return thermostat_kind(v); }
+  static std::string_view name(dsmc::Thermostat t) { return thermostat_name(t); }
+};
+
 constexpr double pos_open = 0.0;  // lower end of "> 0" ranges (open)
 
 // clang-format off
 const Option table[] = {
-  {"engine", 0, E::both, U::command, &R::engine, {}, check_engine, engines_help, "", "the engine:", "", false, false},
+  {"engine", 0, E::both, U::command, &R::engine, {}, nullptr, engines_help, "", "the engine:", "", false, false},
   {"dim", 'd', E::both, U::engine, &R::dim, {1, 6, false, false, "a dimension in 1..6"}, nullptr, nullptr, "", "dimension D, 1..6", "", false, false},
   {"n", 'n', E::both, U::engine, &R::n, {2, 2147483648.0, false, false, "a number of particles in 2..2^31"}, nullptr, nullptr, "", "number of particles, >= 2 (1e6 is read as 1000000)", "", false, false},
   {"out", 'o', E::both, U::command, &R::out, {}, nullptr, nullptr, "", "output folder (created if missing); files appear only when complete, replace an earlier run's, and a folder with other files is refused", "", false, true},
   {"json", 0, E::both, U::command, &R::json, {}, nullptr, nullptr, "", "print the summary as one JSON object, the last stdout line", "", false, false},
   {"model", 0, E::dsmc, U::engine, &R::model, {}, check_model, models_help, "", "collision model:", "", false, false},
   {"vhs-exponent", 0, E::dsmc, U::engine, &R::vhs_exponent, {0, 1, false, false, "in [0, 1]"}, nullptr, nullptr, "", "VHS rate exponent a: pair rate ~ |g|^a, in [0, 1] (hs is 1, maxwell 0; with --model vhs only)", "", false, false},
-  {"init", 0, E::both, U::engine, &R::init, {}, check_init, inits_help, "", "initial velocities:", "", true, false},
+  {"init", 0, E::both, U::engine, &R::init, {}, nullptr, inits_help, "", "initial velocities:", "", true, false},
   {"until", 0, E::both, U::span, &R::until, {pos_open, 1e12, true, false, "a finite time > 0 and at most 1e12"}, nullptr, nullptr, time_unit, "end time (with --every: at most 1e6 sampling intervals)", "", false, false},
   {"every", 0, E::both, U::span, &R::every, {pos_open, 1e308, true, false, "a finite interval > 0"}, nullptr, nullptr, time_unit, "sampling interval, rounded so that it divides the sampled span: the rows are evenly spaced and the last is at --until (include/hypergas/schedule.hpp); one longer than the span gives rows at the start and --until only (said on stderr)", "until/50", false, false},
   {"equilibration", 0, E::edmd, U::command, &R::equilibration, {pos_open, 1e12, true, false, "a finite time > 0, below --until"}, nullptr, nullptr, time_unit, "time the start equilibrates before sampling begins: the measurement window (Z, collision rate, the outputs) is [T, --until]", "until/5", false, false},
@@ -67,14 +91,14 @@ const Option table[] = {
   {"init-file", 0, E::both, U::command, &R::init_file, {}, nullptr, nullptr, "", "start from the state in this H5MD file (a trajectory.h5, or any H5MD file with velocities; EDMD also positions in a cubic periodic box): it sets --dim and --n (EDMD: --packing too), and from the masses the species (mass 1: species 0; one other mass: species 1, --mass-ratio and --fraction); the run starts at t = 0 with its own seed", "", false, false},
   {"init-frame", 0, E::both, U::command, &R::init_frame, {-1e15, 1e15, false, false, "an integer frame index, |K| <= 1e15"}, nullptr, nullptr, "", "with --init-file: the frame to start from, 0 the first, negative from the end (-1 the last)", "-1 (the last)", false, false},
   {"restitution", 0, E::both, U::engine, &R::restitution, {0, 1, false, false, "in [0, 1]"}, nullptr, nullptr, "", "coefficient of normal restitution alpha: each collision's impulse along the normal is scaled by (1 + alpha)/2 and the gas cools (granular gas; 1 = elastic). dsmc: the freely cooling gas is kept in scaled velocities, time runs in mean collision times at the current temperature, and moments.csv gives T and real_time (docs/validation.md)", "", false, false},
-  {"scheme", 0, E::dsmc, U::engine, &R::scheme, {}, check_scheme, schemes_help, "", "time scheme. exact: the reference, and as fast as any below about 1e6 particles; lanes: from about 1e6 particles or for more than one thread (1.7-2.5x exact on one core at 1e6-1e7 in 3D, 1/M bias in the dynamics, exact equilibrium; docs/validation.md, \"The lanes scheme\"); ntc: Bird's scheme, for comparison:", "", false, false},
+  {"scheme", 0, E::dsmc, U::engine, &R::scheme, {}, nullptr, schemes_help, "", "time scheme. exact: the reference, and as fast as any below about 1e6 particles; lanes: from about 1e6 particles or for more than one thread (1.7-2.5x exact on one core at 1e6-1e7 in 3D, 1/M bias in the dynamics, exact equilibrium; docs/validation.md, \"The lanes scheme\"); ntc: Bird's scheme, for comparison:", "", false, false},
   {"dt", 0, E::dsmc, U::engine, &R::dt, {pos_open, 1e308, true, false, "a finite step > 0"}, nullptr, nullptr, "mean collision times", "with --scheme ntc: the time step, at most the sampling interval (each step ends at a sampling instant)", "", false, false},
   {"lane-size", 0, E::dsmc, U::engine, &R::lane_size, {0, 2147483648.0, false, false, "0 or a number of particles in 2..2^31"}, nullptr, nullptr, "particles", "with --scheme lanes: particles per lane M; the gas is cut into L = round(N / M) lanes", "2^19 bytes of velocities: 16384 in 3D, 8192 in 5D and 6D", false, false},
   {"epoch", 0, E::dsmc, U::engine, &R::epoch, {pos_open, 1e308, true, false, "a finite time > 0"}, nullptr, nullptr, "mean collision times", "with --scheme lanes: time between two deals of the particles into lanes", "", false, false},
-  {"drive", 0, E::dsmc, U::engine, &R::drive, {}, check_drive, nullptr, "", "energy input of a granular gas: none (the homogeneous cooling state) or white-noise (random kicks that hold the first-Sonine temperature at --temperature; hard spheres, --restitution < 1)", "", false, false},
+  {"drive", 0, E::dsmc, U::engine, &R::drive, {}, nullptr, nullptr, "", "energy input of a granular gas: none (the homogeneous cooling state) or white-noise (random kicks that hold the first-Sonine temperature at --temperature; hard spheres, --restitution < 1)", "", false, false},
   {"drive-dt", 0, E::dsmc, U::engine, &R::drive_dt, {pos_open, 1, true, false, "a finite interval > 0 and at most 1"}, nullptr, nullptr, "mean collision times", "with --drive white-noise: interval between the kicks", "", false, false},
   {"shear-rate", 0, E::both, U::engine, &R::shear_rate, {0, 100, false, false, "a finite rate in [0, 100]"}, nullptr, nullptr, "per mean collision time at the initial T", "uniform shear flow u_x = a y (D >= 2), writes pressure_tensor.csv and the rheology summary keys (docs/validation.md, \"Uniform shear flow\"); dsmc (--scheme exact): in the frame moving with the flow, dV_x/dt = -a V_y between collisions, exactly; edmd: Lees-Edwards sliding boundaries from t = 0, a per ideal-gas mean collision time (D 2^D eta sqrt(kT/pi) per unit time), the exact kinetic + collisional pressure tensor. 0: no flow", "", false, false},
-  {"thermostat", 0, E::both, U::engine, &R::thermostat, {}, check_thermostat, nullptr, "", "with --shear-rate: none (viscous heating; dsmc keeps the gas in scaled velocities with real_time, as for cooling) or isokinetic (holds T; elastic gases; dsmc: the Gaussian -zeta V exactly; edmd: the peculiar velocities rescaled every 0.1 mean collision times)", "", false, false},
+  {"thermostat", 0, E::both, U::engine, &R::thermostat, {}, nullptr, nullptr, "", "with --shear-rate: none (viscous heating; dsmc keeps the gas in scaled velocities with real_time, as for cooling) or isokinetic (holds T; elastic gases; dsmc: the Gaussian -zeta V exactly; edmd: the peculiar velocities rescaled every 0.1 mean collision times)", "", false, false},
   {"tc-time", 0, E::edmd, U::engine, &R::tc_time, {0, 1e308, false, false, "a finite time >= 0"}, nullptr, nullptr, "sigma sqrt(m/kT)", "with --restitution < 1: a collision within this time of either particle's previous one is elastic (the TC model of Luding and McNamara against inelastic collapse)", "", false, false},
   {"packing", 0, E::edmd, U::engine, &R::packing, {pos_open, 1, true, false, "a finite fraction > 0 and at most 1"}, nullptr, jamming_help, "", "packing fraction eta (volume of the spheres / box volume),", "", false, false},
   {"start-packing", 0, E::edmd, U::engine, &R::start_packing, {pos_open, 1, true, true, "> 0 and < 1"}, nullptr, nullptr, "", "start from the lattice at this packing, at most --packing, and compress (Lubachevsky-Stillinger) to --packing: a dense fluid or glass instead of a crystal", "start at --packing", false, false},
@@ -145,7 +169,7 @@ std::string_view type_name(const Option& opt) {
         if constexpr (std::is_same_v<T, double>) return "NUM";
         else if constexpr (std::is_same_v<T, std::uint64_t>) return "UINT";
         else if constexpr (std::is_same_v<T, bool>) return "FLAG";
-        else if constexpr (std::is_same_v<T, std::string>) return "TEXT";
+        else if constexpr (std::is_same_v<T, std::string> || Named<T>::value) return "TEXT";
         else return "INT";
       },
       opt.field);
@@ -156,24 +180,24 @@ RunOptions defaults(registry::EngineKind e) {
   const edmd::Config m;
   const bool dsmc = e == registry::EngineKind::dsmc;
   RunOptions o;
-  o.engine = std::string(registry::name(e));
+  o.engine = e;
   o.dim = 3;
   // Engine parameters: the engine's own Config defaults (the other engine's options keep
   // theirs, for --help).
   o.n = static_cast<long long>(dsmc ? d.n : m.n);
   o.seed = dsmc ? d.seed : m.seed;
-  o.init = std::string(registry::name(dsmc ? d.init : m.init));
+  o.init = dsmc ? d.init : m.init;
   o.mass_ratio = dsmc ? d.initial.mass_ratio : m.initial.mass_ratio;
   o.fraction = dsmc ? d.initial.fraction : m.initial.fraction;
   o.temperature = d.initial.kT;
   o.model = std::string(dsmc::HardSpheres::name);
   o.vhs_exponent = d.vhs_exponent;
   o.restitution = dsmc ? d.restitution : m.restitution;
-  o.drive = std::string(drive_name(d.drive));
+  o.drive = d.drive;
   o.drive_dt = d.drive_dt;
   o.shear_rate = d.shear_rate;
-  o.thermostat = std::string(thermostat_name(d.thermostat));
-  o.scheme = std::string(registry::name(d.scheme));
+  o.thermostat = d.thermostat;
+  o.scheme = d.scheme;
   o.dt = d.dt;
   o.lane_size = d.lane_size;
   o.epoch = d.epoch;
@@ -212,7 +236,8 @@ void set_text(RunOptions& o, const Option& opt, const std::string& text) {
         else if constexpr (std::is_same_v<T, bool>) {
           if (text != "true" && text != "false") reject(name + " is a flag: true or false");
           set_flag(o, opt, text == "true");
-        } else if constexpr (std::is_same_v<T, std::string>) set_string(o, opt, text);
+        } else if constexpr (std::is_same_v<T, std::string> || Named<T>::value)
+          set_string(o, opt, text);
         else set_integer(o, opt, parse_number<long long>(name, text));
       },
       opt.field);
@@ -249,19 +274,40 @@ void set_real(RunOptions& o, const Option& opt, double v) {
 }
 
 void set_string(RunOptions& o, const Option& opt, const std::string& v) {
-  auto* p = std::get_if<std::string R::*>(&opt.field);
-  if (!p) wrong_type(opt, "text");
-  if (opt.check) {
-    try {
-      opt.check(v);
-    } catch (const InvalidInput& e) {
-      const std::string what = e.what();
-      // parse_duration names the option itself
-      reject(what.rfind(cli_name(opt), 0) == 0 ? what : cli_name(opt) + ": " + what);
+  // an error of a check or a name's parse, naming the option once
+  const auto named_error = [&](const InvalidInput& e) {
+    const std::string what = e.what();
+    // parse_duration names the option itself
+    reject(what.rfind(cli_name(opt), 0) == 0 ? what : cli_name(opt) + ": " + what);
+  };
+  const bool named = std::visit(
+      [&](auto m) {
+        using T = std::remove_reference_t<decltype(o.*m)>;
+        if constexpr (Named<T>::value) {
+          try {
+            o.*m = Named<T>::parse(v);
+          } catch (const InvalidInput& e) {
+            named_error(e);
+          }
+          return true;
+        } else {
+          return false;
+        }
+      },
+      opt.field);
+  if (!named) {
+    auto* p = std::get_if<std::string R::*>(&opt.field);
+    if (!p) wrong_type(opt, "text");
+    if (opt.check) {
+      try {
+        opt.check(v);
+      } catch (const InvalidInput& e) {
+        named_error(e);
+      }
     }
+    if (opt.required_cli && v.empty()) reject(cli_name(opt) + " must not be empty");
+    o.*(*p) = v;
   }
-  if (opt.required_cli && v.empty()) reject(cli_name(opt) + " must not be empty");
-  o.*(*p) = v;
   given(o, opt);
 }
 
@@ -280,6 +326,7 @@ std::string value_text(const RunOptions& o, const Option& opt) {
         if constexpr (std::is_same_v<T, double>) return fmt::format("{:.17g}", v);
         else if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
         else if constexpr (std::is_same_v<T, std::string>) return v;
+        else if constexpr (Named<T>::value) return std::string(Named<T>::name(v));
         else return std::to_string(v);
       },
       opt.field);
@@ -287,8 +334,7 @@ std::string value_text(const RunOptions& o, const Option& opt) {
 
 std::string default_text(const Option& opt) {
   if (!opt.unset.empty()) return std::string(opt.unset);
-  if (std::holds_alternative<std::string R::*>(opt.field) && opt.name == "engine")
-    return std::string(registry::name(default_engine));
+  if (opt.name == "engine") return std::string(registry::name(default_engine));
   // Shortest round-trip form for numbers ("0.1", not "0.10000000000000001").
   const auto shown = [&](const RunOptions& r) {
     if (auto* p = std::get_if<double R::*>(&opt.field)) return fmt::format("{}", r.*(*p));

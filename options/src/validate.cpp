@@ -139,14 +139,10 @@ double RunOptions::checkpoint_wall_seconds() const {
   return checkpoint_wall.empty() ? 0.0 : parse_duration("--checkpoint-wall", checkpoint_wall);
 }
 
-registry::EngineKind RunOptions::engine_kind() const { return registry::engine(engine); }
-
-InitialState RunOptions::initial_state() const { return registry::initial_state(init); }
-
 namespace {
 /// --transport and its options (analysis/transport_recorder.hpp).
 void validate_granular(const RunOptions& o) {
-  const bool driven = drive_kind(o.drive) != dsmc::Drive::none;
+  const bool driven = o.drive != dsmc::Drive::none;
   if (driven && o.restitution == 1.0)
     reject("--drive white-noise needs --restitution < 1 (an elastic gas driven by noise heats "
         "without bound)");
@@ -168,7 +164,7 @@ void validate_granular(const RunOptions& o) {
 void validate_shear(const RunOptions& o) {
   const bool edmd = o.engine_kind() == registry::EngineKind::edmd;
   const bool sheared = o.shear_rate != 0.0;
-  const bool iso = thermostat_kind(o.thermostat) == dsmc::Thermostat::isokinetic;
+  const bool iso = o.thermostat == dsmc::Thermostat::isokinetic;
   if (!sheared) {
     if (iso)
       reject("--thermostat isokinetic needs --shear-rate > 0 (a gas at rest keeps its "
@@ -179,11 +175,11 @@ void validate_shear(const RunOptions& o) {
     reject("--shear-rate needs --dim >= 2: the flow is along x and its gradient along y");
   if (edmd && o.structure)
     reject("--structure measures the fluid at equilibrium: leave out --shear-rate");
-  if (!edmd && registry::scheme(o.scheme) != dsmc::Scheme::exact)
+  if (!edmd && o.scheme != dsmc::Scheme::exact)
     reject(fmt::format("--shear-rate runs on --scheme exact only, not --scheme {}: its candidates "
                        "carry their own times in the flow",
-                       o.scheme));
-  if (!edmd && drive_kind(o.drive) != dsmc::Drive::none)
+                       registry::name(o.scheme)));
+  if (!edmd && o.drive != dsmc::Drive::none)
     reject("--shear-rate and --drive white-noise cannot be combined: the shear is the energy "
            "input");
   if (iso && o.restitution != 1.0)
@@ -201,7 +197,7 @@ void validate_shear(const RunOptions& o) {
 /// --scheme and the options of one scheme.
 void validate_scheme(const RunOptions& o) {
   if (o.engine_kind() != registry::EngineKind::dsmc) return;
-  const dsmc::Scheme s = registry::scheme(o.scheme);
+  const dsmc::Scheme s = o.scheme;
   if (s != dsmc::Scheme::ntc && o.was_given("--dt")) reject("--dt applies with --scheme ntc only");
   if (s != dsmc::Scheme::lanes)
     for (const char* k : {"--lane-size", "--epoch"})
@@ -269,14 +265,14 @@ void validate_physics(const RunOptions& o) {
                        o.mass_ratio, o.fraction, o.n,
                        std::llround(o.fraction * static_cast<double>(o.n))));
   if (o.engine_kind() != registry::EngineKind::dsmc) return;
-  if (o.init == "bkw" && o.model != dsmc::MaxwellMolecules::name)
+  if (o.init == InitialState::bkw && o.model != dsmc::MaxwellMolecules::name)
     reject(fmt::format("--init bkw is the exact solution for Maxwell molecules only: add "
                        "--model {} (not {})",
                        dsmc::MaxwellMolecules::name, o.model));
   // an elastic collision of two equal masses in 1D exchanges their velocities: the set of
   // velocities, and so every measured distribution, never changes
   if (o.dim == 1 && o.mass_ratio == 1.0 && o.restitution == 1.0 &&
-      drive_kind(o.drive) == dsmc::Drive::none)
+      o.drive == dsmc::Drive::none)
     reject("--dim 1 with one mass: an elastic collision only swaps two velocities, so the gas "
            "never relaxes; give --mass-ratio (e.g. 3)");
 }
@@ -289,7 +285,7 @@ void validate(const RunOptions& o) {
   for (const Option& opt : run_table())
     if (!applies(opt, e) && o.was_given(cli_name(opt)))
       reject(fmt::format("{} applies to --engine {} only, not to --engine {}", cli_name(opt),
-                      edmd ? "dsmc" : "edmd", o.engine));
+                      edmd ? "dsmc" : "edmd", registry::name(o.engine)));
   if (o.was_given("--vhs-exponent") && o.model != dsmc::VariableHardSpheres::name)
     reject(fmt::format("--vhs-exponent applies to --model {} only, not to --model {}",
                     dsmc::VariableHardSpheres::name, o.model));
@@ -335,7 +331,7 @@ void validate(const RunOptions& o) {
 
 void validate_span(const RunOptions& o, double t0) {
   if (o.engine_kind() != registry::EngineKind::dsmc ||
-      registry::scheme(o.scheme) != dsmc::Scheme::ntc)
+      o.scheme != dsmc::Scheme::ntc)
     return;
   // the run stops at every sampling instant, and a step never passes a stop
   const Schedule s = o.schedule(t0);
@@ -403,11 +399,11 @@ dsmc::Config dsmc_config(const RunOptions& o) {
   cfg.vhs_exponent = o.vhs_exponent;
   cfg.initial.kT = o.temperature;
   cfg.restitution = o.restitution;
-  cfg.drive = drive_kind(o.drive);
+  cfg.drive = o.drive;
   cfg.drive_dt = o.drive_dt;
   cfg.shear_rate = o.shear_rate;
-  cfg.thermostat = thermostat_kind(o.thermostat);
-  cfg.scheme = registry::scheme(o.scheme);
+  cfg.thermostat = o.thermostat;
+  cfg.scheme = o.scheme;
   cfg.dt = o.dt;
   cfg.lane_size = static_cast<std::uint32_t>(o.lane_size);
   cfg.epoch = o.epoch;
@@ -425,7 +421,7 @@ edmd::Config edmd_config(const RunOptions& o) {
   // the EDMD isokinetic thermostat rescales every 0.1 ideal-gas mean collision times
   // (edmd/lees_edwards.hpp; the bias is O((zeta 0.1)^2), docs/validation.md)
   cfg.thermostat_interval =
-      o.shear_rate != 0.0 && thermostat_kind(o.thermostat) == dsmc::Thermostat::isokinetic
+      o.shear_rate != 0.0 && o.thermostat == dsmc::Thermostat::isokinetic
           ? edmd_thermostat_interval
           : 0.0;
   return cfg;

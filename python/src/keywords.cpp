@@ -30,7 +30,15 @@ void set_value(options::RunOptions& o, const options::Option& opt, const py::han
 }
 
 py::object python_value(const options::RunOptions& o, const options::Option& opt) {
-  return std::visit([&](auto m) { return py::cast(o.*m); }, opt.field);
+  return std::visit(
+      [&](auto m) -> py::object {
+        using T = std::remove_reference_t<decltype(o.*m)>;
+        if constexpr (std::is_enum_v<T> || std::is_same_v<T, InitialState>)
+          return py::cast(options::value_text(o, opt));  // a named choice: its name
+        else
+          return py::cast(o.*m);
+      },
+      opt.field);
 }
 
 const char* use_name(options::Use u) {

@@ -12,8 +12,13 @@ MomentsOutput::MomentsOutput(const RunSetup& s)
     : dim_(s.options.dim),
       dsmc_(s.engine == registry::EngineKind::dsmc),
       restitution_(s.options.restitution),
-      driven_(dsmc_ && options::drive_kind(s.options.drive) != dsmc::Drive::none),
-      hard_spheres_(!dsmc_ || s.options.model == dsmc::HardSpheres::name),
+      driven_(dsmc_ && s.options.drive != dsmc::Drive::none),
+      // the hard-sphere kernel: rate ~ |g| and the hard-sphere scattering law
+      hard_spheres_(!dsmc_ || [&] {
+        const registry::ModelTraits m =
+            registry::model_traits(s.options.model, s.options.vhs_exponent);
+        return m.exponent == 1.0 && !m.isotropic_scattering;
+      }()),
       sheared_(dsmc_ && s.options.shear_rate != 0.0) {
   if (dsmc_) recorder_.set_threads(s.options.threads);
 }

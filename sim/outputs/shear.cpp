@@ -63,8 +63,7 @@ class ShearOutput final : public Output {
   explicit ShearOutput(const RunSetup& s)
       : until_(s.options.until),
         rate_(s.options.shear_rate),
-        isokinetic_(options::thermostat_kind(s.options.thermostat) ==
-                    dsmc::Thermostat::isokinetic),
+        isokinetic_(s.options.thermostat == dsmc::Thermostat::isokinetic),
         granular_(s.options.restitution != 1.0),
         edmd_(s.engine == registry::EngineKind::edmd),
         dim_(s.options.dim),

@@ -35,7 +35,7 @@ class TrajectoryOutput final : public Output {
         every_(static_cast<double>(stride_) * s.plan.sampling.every()),
         traj_(fs::path(s.options.out) / OutputDir::trajectory_partial, stride_,
               !(s.engine == registry::EngineKind::dsmc &&
-                registry::scheme(s.options.scheme) == dsmc::Scheme::lanes),
+                s.options.scheme == dsmc::Scheme::lanes),
               parameters(s)) {}
 
   Observer* sampler() override { return &traj_; }
@@ -52,13 +52,13 @@ class TrajectoryOutput final : public Output {
  private:
   static std::vector<std::pair<std::string, std::string>> parameters(const RunSetup& s) {
     const RunOptions& o = s.options;
-    return {{"engine", o.engine},
+    return {{"engine", std::string(registry::name(o.engine))},
             {"dim", std::to_string(o.dim)},
             {"n", std::to_string(o.n)},
             {"seed", std::to_string(o.seed)},
             {"model", o.model},
-            {"scheme", o.scheme},
-            {"init", o.init}};
+            {"scheme", std::string(registry::name(o.scheme))},
+            {"init", std::string(registry::name(o.init))}};
   }
   std::uint64_t stride_;
   double every_;

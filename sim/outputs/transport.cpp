@@ -40,7 +40,7 @@ class TransportOutput final : public Output {
     ts.dt = dt;
     ts.max_lag = o.correlation_time;
     // the lanes scheme moves particles between slots: no tagged particles, no self-diffusion
-    ts.tagged = registry::scheme(o.scheme) == dsmc::Scheme::lanes ? 0 : o.tagged;
+    ts.tagged = o.scheme == dsmc::Scheme::lanes ? 0 : o.tagged;
     ts.warmup = options::transport_warmup;
     ts.seed = o.seed;
     const registry::ModelTraits m = registry::model_traits(o.model, o.vhs_exponent);

@@ -19,9 +19,11 @@
 namespace hypergas::options {
 
 /// The values of the run options (table.hpp names each). A valid object comes from
-/// defaults(engine) and set_* (table.hpp), then validate().
+/// defaults(engine) and set_* (table.hpp), then validate(). A named choice (engine, scheme,
+/// drive, thermostat, initial state) is held as its enum: the table parses the name once,
+/// and no code past it compares option text.
 struct RunOptions {
-  std::string engine;          ///< registry::engines
+  registry::EngineKind engine = registry::EngineKind::dsmc;  ///< registry::engines
   int dim = 0;                 ///< D, 1..6
   long long n = 0;             ///< particles (signed so that negative input is caught)
   std::string out;             ///< output folder of the command
@@ -29,16 +31,16 @@ struct RunOptions {
   std::string model;           ///< DSMC collision model (registry::Models)
   double vhs_exponent = 0.0;   ///< VHS rate exponent a (rate ~ |g|^a)
   double restitution = 1.0;    ///< coefficient of normal restitution alpha
-  std::string drive;           ///< DSMC energy input: "none" or "white-noise"
+  dsmc::Drive drive = dsmc::Drive::none;  ///< DSMC energy input (none, white-noise)
   double drive_dt = 0.0;       ///< DSMC: interval between white-noise kicks
   double shear_rate = 0.0;     ///< uniform shear flow u_x = a y: a (0: none)
-  std::string thermostat;      ///< sheared gas: "none" or "isokinetic"
-  std::string scheme;          ///< DSMC time scheme (registry::schemes)
+  dsmc::Thermostat thermostat = dsmc::Thermostat::none;  ///< sheared gas (none, isokinetic)
+  dsmc::Scheme scheme = dsmc::Scheme::exact;  ///< DSMC time scheme (registry::schemes)
   double dt = 0.0;             ///< DSMC NTC time step
   long long lane_size = 0;     ///< DSMC lanes scheme: particles per lane (0: the default)
   double epoch = 0.0;          ///< DSMC lanes scheme: time between deals
   double tc_time = 0.0;        ///< EDMD: TC-model time (collisions this close are elastic)
-  std::string init;            ///< initial state name (registry::initial_states)
+  InitialState init = InitialState::maxwell;  ///< initial state (registry::initial_states)
   double until = 0.0;          ///< end time
   double every = 0.0;          ///< requested sampling interval (0: not given; Schedule)
   double histogram_every = 0.0;  ///< speed histograms this far apart (0: the final one only)
@@ -73,8 +75,8 @@ struct RunOptions {
   bool was_given(const std::string& name) const;
   /// --checkpoint-wall in seconds (0 if not given).
   double checkpoint_wall_seconds() const;
-  registry::EngineKind engine_kind() const;
-  InitialState initial_state() const;
+  registry::EngineKind engine_kind() const { return engine; }
+  InitialState initial_state() const { return init; }
   /// The sampling instants of the run from t0 (0 for DSMC; EDMD: the end of equilibration).
   Schedule schedule(double t0) const { return Schedule::make(t0, until, every); }
 };

@@ -25,9 +25,14 @@ enum class Engines : unsigned char { dsmc = 1, edmd = 2, both = 3 };
 /// `span` is the run's time span (a keyword of run()), `command` only the command knows.
 enum class Use : unsigned char { engine, span, command };
 
-/// The RunOptions member an option sets; its alternative is the option's type.
+/// The RunOptions member an option sets; its alternative is the option's type. The enum
+/// members are named choices ("TEXT" to the command and Python): set from a name, printed
+/// as one.
 using Field = std::variant<int RunOptions::*, long long RunOptions::*, std::uint64_t RunOptions::*,
-                           double RunOptions::*, std::string RunOptions::*, bool RunOptions::*>;
+                           double RunOptions::*, std::string RunOptions::*, bool RunOptions::*,
+                           registry::EngineKind RunOptions::*, dsmc::Scheme RunOptions::*,
+                           dsmc::Drive RunOptions::*, dsmc::Thermostat RunOptions::*,
+                           InitialState RunOptions::*>;
 
 /// Allowed numeric values: lo .. hi, each end open or closed; NaN and inf never pass.
 struct Range {

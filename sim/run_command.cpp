@@ -151,8 +151,13 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume, bool quiet) {
             ? fmt::format("Z = PV/NkT {} +- {}", f("Z"), f("Z_error"))
             : fmt::format("Z = PV/NkT undefined {}",
                           o.shear_rate != 0.0 ? "under shear" : "in a granular gas");
-    fmt::print("  packing {}, {}, collision rate {} +- {}, mean free time {}\n", f("packing"),
-               z, f("collision_rate"), f("collision_rate_error"), f("mean_free_time"));
+    // a cooling gas's rate is a mean over a changing state, without a block error
+    const std::string rate =
+        std::isfinite(summary_number(summary, "collision_rate_error"))
+            ? fmt::format("{} +- {}", f("collision_rate"), f("collision_rate_error"))
+            : fmt::format("{} (mean over the cooling)", f("collision_rate"));
+    fmt::print("  packing {}, {}, collision rate {}, mean free time {}\n", f("packing"), z, rate,
+               f("mean_free_time"));
   }
   std::string files;
   for (const auto& name : out.committed()) files += (files.empty() ? "" : ", ") + name;

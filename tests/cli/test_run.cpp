@@ -703,6 +703,9 @@ TEST_CASE("run --engine edmd --restitution 0.8 cools at the first-Sonine rate", 
                                "tc_elastic_collisions"});
   CHECK(summary.find("\"energy_rel_drift\": null") != std::string::npos);
   CHECK(summary.find("\"Z\": null") != std::string::npos);  // no equilibrium pressure
+  // stdout quotes no error of an undefined value, nor an undefined error
+  CHECK(r.out.find("Z = PV/NkT undefined in a granular gas") != std::string::npos);
+  CHECK(r.out.find("+- -") == std::string::npos);
   // Collisions conserve momentum at any restitution.
   CHECK(json_number(summary, "momentum_drift") < 1e-12);
   // The gas equilibrates elastically over 20 % of --until: the rows start there, at the

@@ -24,10 +24,14 @@ std::uint64_t grid_max_lag(std::uint64_t p, std::uint64_t m, std::uint64_t level
 }  // namespace
 
 MultiTauCorrelator::MultiTauCorrelator(Kind kind, std::size_t channels, int dim, std::size_t p,
-                                       std::size_t m, std::size_t levels)
-    : kind_(kind), channels_(channels), dim_(dim), p_(p), m_(m), levels_(levels) {
+                                       std::size_t m, std::size_t levels, std::size_t groups)
+    : kind_(kind), channels_(channels), dim_(dim), p_(p), m_(m), levels_(levels),
+      groups_(groups) {
   if (channels < 1 || dim < 1)
     throw InvalidInput("MultiTauCorrelator: need >= 1 channel and dimension >= 1");
+  if (groups < 1 || groups > channels)
+    throw InvalidInput("MultiTauCorrelator: need 1 <= groups <= channels (groups " +
+                       std::to_string(groups) + ", channels " + std::to_string(channels) + ")");
   if (m < 2 || p < m || p % m != 0)
     throw InvalidInput("MultiTauCorrelator: need m >= 2 and p a multiple of m (p " +
                        std::to_string(p) + ", m " + std::to_string(m) + ")");
@@ -44,7 +48,7 @@ MultiTauCorrelator::MultiTauCorrelator(Kind kind, std::size_t channels, int dim,
   head_.assign(nl, 0);
   filled_.assign(nl, 0);
   block_count_.assign(nl, 0);
-  sum_.assign(nl * p, 0.0);
+  sum_.assign(nl * p * groups, 0.0);
   count_.assign(nl * p, 0);
 }
 
@@ -84,18 +88,22 @@ void MultiTauCorrelator::store(std::size_t level, const double* x, std::size_t s
     // Pairs (a(t - j), a(t)): j from 0 on level 0, from p/m on coarser levels.
     const std::size_t j0 = l == 0 ? 0 : p / static_cast<std::size_t>(m_);
     const auto filled = static_cast<std::size_t>(filled_[l]);
+    const auto G = static_cast<std::size_t>(groups_);
     for (std::size_t j = j0; j < filled; ++j) {
       const double* b = ring.data() + ((head + p - j) % p) * w;
-      double s = 0.0;
-      if (corr) {
-        for (std::size_t i = 0; i < w; ++i) s += a[i] * b[i];
-      } else {
-        for (std::size_t i = 0; i < w; ++i) {
-          const double d = a[i] - b[i];
-          s += d * d;
+      for (std::size_t g = 0; g < G; ++g) {
+        const std::size_t i0 = group_begin(g) * dim, i1 = group_begin(g + 1) * dim;
+        double s = 0.0;
+        if (corr) {
+          for (std::size_t i = i0; i < i1; ++i) s += a[i] * b[i];
+        } else {
+          for (std::size_t i = i0; i < i1; ++i) {
+            const double d = a[i] - b[i];
+            s += d * d;
+          }
         }
+        sum_[(l * p + j) * G + g] += s;
       }
-      sum_[l * p + j] += s;
       ++count_[l * p + j];
     }
 
@@ -123,8 +131,20 @@ void MultiTauCorrelator::store(std::size_t level, const double* x, std::size_t s
 }
 
 MultiTauCurve MultiTauCorrelator::curve(std::size_t max_lag) const {
+  return values(max_lag, 0, static_cast<std::size_t>(groups_));
+}
+
+MultiTauCurve MultiTauCorrelator::group_curve(std::size_t g, std::size_t max_lag) const {
+  if (g >= groups_) throw InvalidInput("MultiTauCorrelator: no group " + std::to_string(g));
+  return values(max_lag, g, g + 1);
+}
+
+MultiTauCurve MultiTauCorrelator::values(std::size_t max_lag, std::size_t g0,
+                                         std::size_t g1) const {
   MultiTauCurve out;
   const std::size_t p = static_cast<std::size_t>(p_);
+  const auto G = static_cast<std::size_t>(groups_);
+  const auto channels = static_cast<double>(group_begin(g1) - group_begin(g0));
   std::uint64_t scale = 1;  // m^l
   for (std::size_t l = 0; l < ring_.size(); ++l, scale *= m_) {
     for (std::size_t j = l == 0 ? 0 : p / static_cast<std::size_t>(m_); j < p; ++j) {
@@ -134,8 +154,9 @@ MultiTauCurve MultiTauCorrelator::curve(std::size_t max_lag) const {
       if (n == 0) continue;
       out.lag.push_back(static_cast<std::size_t>(lag));
       out.origins.push_back(static_cast<std::size_t>(n));
-      out.value.push_back(sum_[l * p + j] /
-                          (static_cast<double>(n) * static_cast<double>(channels_)));
+      double s = 0.0;
+      for (std::size_t g = g0; g < g1; ++g) s += sum_[(l * p + j) * G + g];
+      out.value.push_back(s / (static_cast<double>(n) * channels));
     }
   }
   return out;
@@ -154,7 +175,7 @@ std::size_t MultiTauCorrelator::bytes() const {
 std::size_t MultiTauCorrelator::max_bytes() const {
   const auto nl = static_cast<std::size_t>(levels_), p = static_cast<std::size_t>(p_);
   const std::size_t values = width() * (p + (kind_ == Kind::correlation ? 1 : 0));
-  return nl * (values + 2 * p + 3) * sizeof(double);
+  return nl * (values + (static_cast<std::size_t>(groups_) + 1) * p + 3) * sizeof(double);
 }
 
 void MultiTauCorrelator::check_state() const {
@@ -177,7 +198,8 @@ void MultiTauCorrelator::check_state() const {
     bad("levels");
   if (ring_.empty() && samples_ != 0) bad("levels");
   if (head_.size() != nl || filled_.size() != nl || block_count_.size() != nl ||
-      sum_.size() != nl * p || count_.size() != nl * p)
+      groups_ < 1 || groups_ > channels_ || sum_.size() != nl * p * groups_ ||
+      count_.size() != nl * p)
     bad("bookkeeping sizes");
   for (const auto& r : ring_)
     if (r.size() != p * width()) bad("ring size");

@@ -3,10 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "hypergas/analysis/output.hpp"
 #include "hypergas/analysis/sample.hpp"
+#include "hypergas/analysis/vacf.hpp"
 #include "hypergas/error.hpp"
+#include "integrals.hpp"
 
 namespace hypergas::analysis {
 
@@ -26,10 +29,12 @@ void VacfRecorder::observe(const Snapshot& s) {
     if (n == 0) throw InvalidInput("VacfRecorder: snapshot without particles");
     const auto p = static_cast<std::size_t>(p_), m = static_cast<std::size_t>(m_),
                levels = static_cast<std::size_t>(levels_);
-    velocity_ = MultiTauCorrelator(MultiTauCorrelator::Kind::correlation, n, s.dim, p, m, levels);
+    const std::size_t g = std::min(groups, n);
+    velocity_ =
+        MultiTauCorrelator(MultiTauCorrelator::Kind::correlation, n, s.dim, p, m, levels, g);
     if (positions)
       position_ =
-          MultiTauCorrelator(MultiTauCorrelator::Kind::displacement, n, s.dim, p, m, levels);
+          MultiTauCorrelator(MultiTauCorrelator::Kind::displacement, n, s.dim, p, m, levels, g);
     n_ = n;
     dim_ = s.dim;
     has_positions_ = positions;
@@ -89,6 +94,70 @@ double VacfRecorder::green_kubo(std::size_t max_lag) const {
   for (std::size_t i = 1; i < c.lag.size(); ++i)
     s += 0.5 * (c.value[i - 1] + c.value[i]) * static_cast<double>(c.lag[i] - c.lag[i - 1]);
   return s * dt_ / dim_;
+}
+
+namespace {
+/// A multiple-tau curve on the uniform grid of lags 0 .. last, linear between its lags.
+std::vector<double> uniform(const MultiTauCurve& c) {
+  std::vector<double> u(c.lag.back() + 1);
+  for (std::size_t i = 0; i + 1 < c.lag.size(); ++i) {
+    const std::size_t a = c.lag[i], b = c.lag[i + 1];
+    for (std::size_t k = a; k < b; ++k)
+      u[k] = c.value[i] + (c.value[i + 1] - c.value[i]) * static_cast<double>(k - a) /
+                              static_cast<double>(b - a);
+  }
+  u.back() = c.value.back();
+  return u;
+}
+}  // namespace
+
+VacfRecorder::Diffusion VacfRecorder::diffusion(double mean_free_time) const {
+  if (frames_ < 8) throw InvalidInput("VacfRecorder: diffusion() needs at least 8 frames");
+  if (!has_positions_) throw InvalidInput("VacfRecorder: diffusion() needs positions");
+  if (!(mean_free_time > 0.0 && std::isfinite(mean_free_time)))
+    throw InvalidInput("VacfRecorder: diffusion() needs a finite mean free time > 0");
+  const std::size_t L = default_lag(0);
+  const double h = dt_;
+  const double per_dim = 1.0 / static_cast<double>(dim_);
+  // running integrals over D, the whole set and each group
+  const auto integral = [&](const std::vector<double>& c) {
+    std::vector<double> I = detail::running_integral(c, h);
+    for (double& x : I) x *= per_dim;
+    return I;
+  };
+  const std::vector<double> c = uniform(velocity_.curve(L));
+  const std::vector<double> I = integral(c);
+  std::vector<std::vector<double>> Ij;
+  std::vector<std::vector<double>> msd_j;
+  for (std::size_t g = 0; g < velocity_.groups(); ++g) {
+    Ij.push_back(integral(uniform(velocity_.group_curve(g, L))));
+    msd_j.push_back(uniform(position_.group_curve(g, L)));
+  }
+  const std::size_t K = c.size() - 1;
+  const auto k_least =
+      static_cast<std::size_t>(std::max(1.0, std::round(5.0 * mean_free_time / h)));
+  const std::size_t k0 =
+      std::max(k_least, detail::auto_cut(c, detail::running_integral(c, h), h, 3.0));
+  const detail::Plateau P = detail::plateau(I, Ij, k0, 2 * K / 3, dim_);
+  Diffusion d;
+  d.green_kubo = P.value;
+  d.statistical_error = P.statistical_error;
+  d.truncation_error = P.truncation_error;
+  d.error = P.error;
+  d.cut_time = static_cast<double>(P.cut) * h;
+  d.reached = P.reached;
+  // Einstein: the slope around the cut, each group's, with the Green-Kubo remainder
+  const std::size_t a = std::max<std::size_t>(1, P.cut / 2), b = std::min(3 * P.cut / 2, K);
+  if (b >= a + 2) {
+    std::vector<double> e;
+    for (const auto& m : msd_j) e.push_back(msd_diffusion(m, h, dim_, a, b).value + P.remainder);
+    const MeanSe all = mean_se(e);
+    d.einstein = msd_diffusion(uniform(position_.curve(L)), h, dim_, a, b).value + P.remainder;
+    d.einstein_error = std::hypot(all.se, P.truncation_error);
+  } else {
+    d.einstein = d.einstein_error = std::numeric_limits<double>::quiet_NaN();
+  }
+  return d;
 }
 
 void VacfRecorder::write_csv(const std::string& path, std::size_t max_lag) const {

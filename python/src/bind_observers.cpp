@@ -148,6 +148,19 @@ void bind_observers(py::module_& m) {
                      std::size_t max_lag) { return to_numpy(r.msd(max_lag)); },
            py::arg("max_lag") = 0)
       .def("green_kubo", &analysis::VacfRecorder::green_kubo, py::arg("max_lag") = 0)
+      // the command's diffusion_* keys (sim/outputs/vacf.cpp): one estimator
+      .def("diffusion",
+           [](const analysis::VacfRecorder& r, double mean_free_time) {
+             const analysis::VacfRecorder::Diffusion d = r.diffusion(mean_free_time);
+             py::dict out;
+             out["green_kubo"] = d.green_kubo, out["error"] = d.error;
+             out["statistical_error"] = d.statistical_error;
+             out["truncation_error"] = d.truncation_error, out["cut_time"] = d.cut_time;
+             out["einstein"] = d.einstein, out["einstein_error"] = d.einstein_error;
+             out["reached"] = d.reached;
+             return out;
+           },
+           py::arg("mean_free_time"))
       .def("write_csv", &analysis::VacfRecorder::write_csv, py::arg("path"),
            py::arg("max_lag") = 0);
 

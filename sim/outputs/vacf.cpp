@@ -1,6 +1,9 @@
 // sim/outputs/vacf.cpp -- vacf.csv (EDMD): the velocity autocorrelation of up to 2000
-// particles by multiple-tau correlation (analysis::VacfRecorder), and the summary key
-// diffusion_green_kubo, its Green-Kubo integral divided by D. The VACF decays over about a
+// particles by multiple-tau correlation (analysis::VacfRecorder), and the summary keys of
+// its self-diffusion coefficient (VacfRecorder::diffusion: the plateau rule of every EDMD
+// transport coefficient, with its statistical and truncation errors): diffusion_green_kubo
+// and the Einstein route diffusion_einstein from the MSD, held against each other in every
+// run (diffusion_green_kubo_route_difference_se, route_check.hpp). The VACF decays over about a
 // mean free time, so it is sampled on a grid of its own, about a tenth of the mean free
 // time estimated before the run (vacf_step), whatever --every is: the run makes fine stops
 // between its sampling instants (RunPlan::substeps), where the engine copies only the
@@ -16,6 +19,7 @@
 #include "../output_dir.hpp"
 #include "../run_summary.hpp"
 #include "output.hpp"
+#include "route_check.hpp"
 #include "hypergas/analysis/vacf_recorder.hpp"
 #include "hypergas/granular/theory.hpp"
 #include "plot_vacf_gp.hpp"  // generated from scripts/run/vacf.gp
@@ -75,9 +79,23 @@ class VacfOutput final : public Output {
   }
   void summarize(analysis::JsonObject& s) const override {
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-    const bool ok = recorder_.frames() >= 2 && resolved(recorder_.dt(), s);
+    const bool ok = recorder_.frames() >= 8 && recorder_.has_positions() &&
+                    resolved(recorder_.dt(), s);
     s.emplace_back("vacf_dt", recorder_.dt());
-    s.emplace_back("diffusion_green_kubo", ok ? recorder_.green_kubo() : nan);
+    analysis::VacfRecorder::Diffusion d;
+    d.green_kubo = d.statistical_error = d.truncation_error = d.error = d.cut_time = nan;
+    d.einstein = d.einstein_error = nan;
+    if (ok) d = recorder_.diffusion(summary_number(s, "mean_free_time"));
+    s.emplace_back("diffusion_green_kubo", d.green_kubo);
+    s.emplace_back("diffusion_green_kubo_error", d.error);
+    s.emplace_back("diffusion_green_kubo_statistical_error", d.statistical_error);
+    s.emplace_back("diffusion_green_kubo_truncation_error", d.truncation_error);
+    s.emplace_back("diffusion_cut_time", d.cut_time);
+    s.emplace_back("diffusion_einstein", d.einstein);
+    s.emplace_back("diffusion_einstein_error", d.einstein_error);
+    check_routes(s, "diffusion_green_kubo_route_difference_se", d.green_kubo, d.error,
+                 d.einstein, d.einstein_error,
+                 "self-diffusion by the VACF (Green-Kubo) and by the MSD (Einstein)");
   }
   void report(std::string& text, const analysis::JsonObject& s) const override {
     const double tau = summary_number(s, "mean_free_time");

@@ -320,7 +320,8 @@ TEST_CASE("Multiple-tau memory does not grow with the number of frames", "[analy
     if (f == 0) bound = rec.max_bytes();
   }
   CHECK(rec.max_bytes() == bound);
-  CHECK(bound == 18 * (10 * 3 * (2 * 16 + 1) + 2 * (2 * 16 + 3)) * sizeof(double));
+  // two correlators (velocity, position) of 8 error groups each (VacfRecorder::groups)
+  CHECK(bound == 18 * (10 * 3 * (2 * 16 + 1) + 2 * ((8 + 1) * 16 + 3)) * sizeof(double));
   CHECK(rec.bytes() <= bound);
   CHECK(rec.bytes() * 10 < 100000 * 10 * 3 * 2 * sizeof(double));
 }
@@ -434,4 +435,49 @@ TEST_CASE("VacfRecorder: Green–Kubo on the multiple-tau grid and vacf.csv rows
   CHECK_THROWS_AS(one.vacf(), InvalidInput);
   CHECK_THROWS_AS(VacfRecorder(0), InvalidInput);
   CHECK_THROWS_AS(VacfRecorder(10, 16, 3), InvalidInput);
+}
+
+TEST_CASE("Multiple-tau groups: each group's curve is its channels' curve, one group the "
+          "plain sums", "[analysis]") {
+  // 10 channels in 3 groups (4, 3, 3 channels: floor(c G / 10)). Group g's curve must be
+  // that of a correlator fed only its channels (to round-off: the same pairs, summed in
+  // the same order), the channel-weighted mean of the groups the whole curve, and one group
+  // the correlator without groups bit for bit.
+  Rng rng(5);
+  const std::size_t n = 10, frames = 300;
+  const int dim = 2;
+  std::vector<double> v(frames * n * dim);
+  for (double& x : v) x = rng.normal();
+  for (const auto kind : {Kind::correlation, Kind::displacement}) {
+    MultiTauCorrelator all(kind, n, dim, 16, 2, 0, 3), one(kind, n, dim, 16, 2, 0, 1),
+        plain(kind, n, dim);
+    std::vector<MultiTauCorrelator> parts;
+    for (std::size_t g = 0; g < 3; ++g)
+      parts.emplace_back(kind, all.group_begin(g + 1) - all.group_begin(g), dim);
+    REQUIRE(all.group_begin(1) == 4);
+    REQUIRE(all.group_begin(2) == 7);
+    for (std::size_t f = 0; f < frames; ++f) {
+      const double* x = v.data() + f * n * dim;
+      all.add(x, dim), one.add(x, dim), plain.add(x, dim);
+      for (std::size_t g = 0; g < 3; ++g) parts[g].add(x + all.group_begin(g) * dim, dim);
+    }
+    const MultiTauCurve c = all.curve(150);
+    CHECK(one.curve(150).value == plain.curve(150).value);  // bit for bit
+    std::vector<double> weighted(c.value.size(), 0.0);
+    for (std::size_t g = 0; g < 3; ++g) {
+      const MultiTauCurve cg = all.group_curve(g, 150), ref = parts[g].curve(150);
+      REQUIRE(cg.lag == c.lag);
+      REQUIRE(ref.lag == c.lag);
+      const double share =
+          static_cast<double>(all.group_begin(g + 1) - all.group_begin(g)) / n;
+      for (std::size_t i = 0; i < c.lag.size(); ++i) {
+        CHECK(cg.value[i] == Approx(ref.value[i]).epsilon(1e-12).margin(1e-14));
+        weighted[i] += share * cg.value[i];
+      }
+    }
+    for (std::size_t i = 0; i < c.lag.size(); ++i)
+      CHECK(weighted[i] == Approx(c.value[i]).epsilon(1e-12).margin(1e-14));
+  }
+  CHECK_THROWS_AS(MultiTauCorrelator(Kind::correlation, 3, 1, 16, 2, 0, 4), InvalidInput);
+  CHECK_THROWS_AS(MultiTauCorrelator(Kind::correlation, 3, 1, 16, 2, 0, 0), InvalidInput);
 }

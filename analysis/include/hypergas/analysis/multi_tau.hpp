@@ -32,11 +32,18 @@
 // of a channel (so C(0) = <|a|^2> per channel). Each pair's terms are summed over channels
 // and components first, then added to its lag's sum (double).
 //
+// Groups. The channels can be split into `groups` contiguous groups of nearly equal size
+// (channel c in group floor(c G / channels)), each with its own sums: group_curve(g) is the
+// statistic of group g's channels, and independent channels (particles of a fluid, whose
+// cross-correlations are O(1/N)) make the groups independent estimates, whose spread is the
+// statistical error of curve(). With one group the sums are those without groups, bit for
+// bit.
+//
 // Memory. Level l is allocated when its first value arrives (after m^l frames), up to
 // `levels` levels; the largest lag is (p-1) m^(levels-1) frames. Per level: a ring of
 // p * channels * dim doubles, for `correlation` one block sum of channels * dim doubles, and
-// 2p + 3 numbers of bookkeeping. In all at most
-//   levels * (channels * dim * (p + [correlation]) + 2 p + 3) * 8 bytes
+// (groups + 1) p + 3 numbers of bookkeeping. In all at most
+//   levels * (channels * dim * (p + [correlation]) + (groups + 1) p + 3) * 8 bytes
 // (bytes() reports the current value): O(channels * dim * levels * p), independent of the
 // number of frames once all levels exist. Cost per frame: about m/(m-1) * p * channels * dim
 // multiply-adds.
@@ -72,9 +79,10 @@ class MultiTauCorrelator {
   /// `channels` >= 1 vectors of `dim` >= 1 components; p points per level (p >= m, p a
   /// multiple of m), averaging factor m >= 2, `levels` >= 1 levels (0: the fewest levels
   /// whose largest lag (p-1) m^(levels-1) is >= auto_max_lag; p = 16, m = 2: 18 levels, up
-  /// to 1966080 frames). Throws InvalidInput for other values.
+  /// to 1966080 frames), `groups` in 1..channels (see the file comment). Throws
+  /// InvalidInput for other values.
   MultiTauCorrelator(Kind kind, std::size_t channels, int dim, std::size_t p = 16,
-                     std::size_t m = 2, std::size_t levels = 0);
+                     std::size_t m = 2, std::size_t levels = 0, std::size_t groups = 1);
 
   /// Adds one frame: channel c, component k at x[c * stride + k] (stride >= dim). Throws
   /// InvalidInput on an empty correlator.
@@ -86,6 +94,11 @@ class MultiTauCorrelator {
   std::size_t points() const { return static_cast<std::size_t>(p_); }
   std::size_t factor() const { return static_cast<std::size_t>(m_); }
   std::size_t levels() const { return static_cast<std::size_t>(levels_); }
+  std::size_t groups() const { return static_cast<std::size_t>(groups_); }
+  /// The channels of group g: [group_begin(g), group_begin(g + 1)).
+  std::size_t group_begin(std::size_t g) const {
+    return static_cast<std::size_t>((g * channels_ + groups_ - 1) / groups_);
+  }
   /// Frames added so far.
   std::size_t samples() const { return static_cast<std::size_t>(samples_); }
   /// The largest lag of the grid, (p-1) m^(levels-1) frames.
@@ -94,6 +107,8 @@ class MultiTauCorrelator {
   /// The statistic (correlation: <a(t) . a(t+lag)>, displacement: <|a(t+lag) - a(t)|^2>, in
   /// the units of a squared) at the grid lags <= max_lag that have at least one origin.
   MultiTauCurve curve(std::size_t max_lag) const;
+  /// The same of group g's channels only, at the lags of curve(max_lag).
+  MultiTauCurve group_curve(std::size_t g, std::size_t max_lag) const;
 
   /// Bytes of the buffers held now (their capacities; the few vector headers not counted).
   std::size_t bytes() const;
@@ -105,7 +120,7 @@ class MultiTauCorrelator {
   template <class Archive>
   void io(Archive& a) {
     a.tag("multi-tau");
-    a(kind_, channels_, dim_, p_, m_, levels_, samples_);
+    a(kind_, channels_, dim_, p_, m_, levels_, groups_, samples_);
     a(ring_, block_, head_, filled_, block_count_, sum_, count_);
     if constexpr (!Archive::saving) check_state();
   }
@@ -115,6 +130,8 @@ class MultiTauCorrelator {
   void store(std::size_t l, const double* x, std::size_t stride);
   void add_level();
   void check_state() const;
+  // curve() of the channels of groups g0 .. g1 - 1
+  MultiTauCurve values(std::size_t max_lag, std::size_t g0, std::size_t g1) const;
   std::size_t width() const {
     return static_cast<std::size_t>(channels_) * static_cast<std::size_t>(dim_);
   }
@@ -122,7 +139,7 @@ class MultiTauCorrelator {
   Kind kind_ = Kind::correlation;
   std::uint64_t channels_ = 0;
   int dim_ = 0;
-  std::uint64_t p_ = 0, m_ = 0, levels_ = 0;
+  std::uint64_t p_ = 0, m_ = 0, levels_ = 0, groups_ = 1;
   std::uint64_t samples_ = 0;
   // Per allocated level l (ring_.size() of them): the last p values, value slot s at
   // ring_[l][s * width() ...]; for `correlation` the running sum of the current block.
@@ -130,8 +147,8 @@ class MultiTauCorrelator {
   // Per level (levels_ entries): the slot of the newest value, the number of values held
   // (<= p), the number of values in the current block (< m).
   std::vector<std::uint64_t> head_, filled_, block_count_;
-  // Per level and j (index l * p + j): sum over pairs and channels of the statistic, and
-  // the number of pairs (time origins).
+  // Per level and j: sum over pairs and the channels of group g of the statistic (index
+  // (l * p + j) * groups + g), and the number of pairs (time origins, index l * p + j).
   std::vector<double> sum_;
   std::vector<std::uint64_t> count_;
 };

@@ -8,8 +8,19 @@
 // displacements). Both are averaged over the particles and over time origins, at the
 // multiple-tau lags (in frames) 0 .. p-1 (exact, every origin), then j m^l for j = p/m .. p-1
 // on levels l = 1, 2, ... (p = 16, m = 2: 0..15, 16, 18, ..., 30, 32, 36, ...). Memory:
-// at most levels * (max_particles * D * (2p + 1) + 2 (2p + 3)) * 8 bytes (bytes()), whatever
-// the number of frames; by default lags up to about 2e6 frames are reachable.
+// at most levels * (max_particles * D * (2p + 1) + 2 ((groups + 1) p + 3)) * 8 bytes
+// (bytes()), whatever the number of frames; by default lags up to about 2e6 frames are
+// reachable.
+//
+// The self-diffusion coefficient, diffusion(): the particles are followed in `groups`
+// groups (MultiTauCorrelator's groups; 8, or one per particle below 8), independent
+// estimates whose spread is the statistical error. Green-Kubo: the running integral of the
+// VACF over D, read at its plateau by the one rule of every EDMD transport coefficient
+// (integrals.hpp, detail::plateau: the cut, the t^(-D/2) tail's remainder and the
+// truncation error), on the uniform lag grid of the frames: the VACF between two multiple-tau
+// lags is taken linear, exact on level 0 and within the coarse levels' own smoothing
+// (multi_tau.hpp) beyond. Einstein: the MSD's slope over [k_c / 2, 3 k_c / 2] around the same
+// cut, over 2D, with the same remainder (helfand_recorder.cpp does the same).
 #pragma once
 
 #include <cstddef>
@@ -28,6 +39,25 @@ class VacfRecorder final : public Observer {
   /// MultiTauCorrelator (0 levels: automatic). Throws InvalidInput for invalid values.
   explicit VacfRecorder(std::size_t max_particles = 1000, std::size_t p = 16, std::size_t m = 2,
                         std::size_t levels = 0);
+
+  /// Error groups of the followed particles (at most one per particle).
+  static constexpr std::size_t groups = 8;
+
+  /// Self-diffusion coefficient by two routes (see the file comment), length^2/time.
+  struct Diffusion {
+    double green_kubo = 0.0;             ///< at the plateau, the remainder included
+    double statistical_error = 0.0;      ///< of green_kubo, from the groups
+    double truncation_error = 0.0;       ///< |remainder| of the cut
+    double error = 0.0;                  ///< hypot of the two
+    double cut_time = 0.0;               ///< the cut, time units
+    double einstein = 0.0;               ///< MSD slope / 2D around the cut, with the remainder
+    double einstein_error = 0.0;         ///< its statistical error (groups) and truncation
+    bool reached = false;                ///< the remainder is within the statistical error
+  };
+  /// diffusion() of the run: the first candidate cut at 5 mean free times (`mean_free_time`,
+  /// time units) and 3 integral times. Throws InvalidInput with fewer than 8 frames or
+  /// without positions.
+  Diffusion diffusion(double mean_free_time) const;
 
   /// Adds one frame. Throws InvalidInput if the dimension or particle count changes,
   /// positions appear or disappear, or the time spacing differs from the first one by
@@ -52,8 +82,9 @@ class VacfRecorder final : public Observer {
   std::vector<double> vacf(std::size_t max_lag = 0) const;
   /// <|r(lag dt) - r(0)|^2> at lags(max_lag), length^2; needs positions.
   std::vector<double> msd(std::size_t max_lag = 0) const;
-  /// Green–Kubo self-diffusion coefficient (1/D) integral of the VACF from 0 to the last of
-  /// lags(max_lag), trapezoid rule on the (non-uniform) lag grid, length^2/time.
+  /// The running Green–Kubo integral (1/D) of the VACF from 0 to the last of lags(max_lag),
+  /// trapezoid rule on the (non-uniform) lag grid, length^2/time: no cut rule, no error (the
+  /// estimate is diffusion()).
   double green_kubo(std::size_t max_lag = 0) const;
 
   /// Writes vacf.csv with columns `lag,vacf,time,msd` (msd only with positions; time =

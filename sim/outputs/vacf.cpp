@@ -62,7 +62,8 @@ bool resolved(double dt, const analysis::JsonObject& s) {
 class VacfOutput final : public Output {
  public:
   explicit VacfOutput(const RunSetup& s)
-      : recorder_(std::min<std::size_t>(static_cast<std::size_t>(s.options.n), vacf_particles)) {
+      : recorder_(std::min<std::size_t>(static_cast<std::size_t>(s.options.n), vacf_particles)),
+        equilibrium_(s.options.shear_rate == 0.0 && s.options.restitution == 1.0) {
     // fine stops of about vacf_step estimated mean free times between the sampling instants
     const double h = vacf_step * estimated_mean_free_time(s.options);
     const double every = s.plan.sampling.every();
@@ -79,7 +80,9 @@ class VacfOutput final : public Output {
   }
   void summarize(analysis::JsonObject& s) const override {
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-    const bool ok = recorder_.frames() >= 8 && recorder_.has_positions() &&
+    // a self-diffusion coefficient is that of a gas in equilibrium: a sheared gas's MSD
+    // grows with the flow (as t^3 along it), a cooling gas's VACF is not stationary
+    const bool ok = equilibrium_ && recorder_.frames() >= 8 && recorder_.has_positions() &&
                     resolved(recorder_.dt(), s);
     s.emplace_back("vacf_dt", recorder_.dt());
     analysis::VacfRecorder::Diffusion d;
@@ -114,6 +117,7 @@ class VacfOutput final : public Output {
 
  private:
   analysis::VacfRecorder recorder_;
+  bool equilibrium_;  ///< neither sheared nor granular
 };
 
 }  // namespace

@@ -403,6 +403,7 @@ TEST_CASE("EDMD: Green-Kubo diffusion equals the MSD slope at any --every", "[cl
   Scratch s("vacf");
   const std::vector<std::string> every{"0.02", "0.1", "", "1", "", "0.05", "0.5"};
   std::vector<double> gk, msd;
+  double gk_ms = 0.0;  // mean square stated error of diffusion_green_kubo
   for (std::size_t r = 0; r < every.size(); ++r) {
     const auto out = s.path() / (std::string("e") + std::to_string(r));
     std::vector<std::string> args{"run",       "--engine", "edmd", "--dim",  "4",
@@ -427,6 +428,23 @@ TEST_CASE("EDMD: Green-Kubo diffusion equals the MSD slope at any --every", "[cl
     const std::size_t b = t.size() - 1;
     msd.push_back((m[b] - m[a]) / (2.0 * 4.0 * (t[b] - t[a])));
     gk.push_back(json_number(js, "diffusion_green_kubo"));
+    gk_ms += std::pow(json_number(js, "diffusion_green_kubo_error"), 2) / 7.0;
+    // the VACF's Green-Kubo value and its MSD's slope around the same cut, each with its
+    // stated error: within 3 of their combined error (a normal false failure 0.3 % per run;
+    // the two share trajectories, so the combined error overstates their difference)
+    CHECK(std::abs(json_number(js, "diffusion_green_kubo_route_difference_se")) <= 3.0);
+  }
+  // the stated error against the spread of the seven Green-Kubo values: within a factor 2
+  // (the sd of 7 values has 6 degrees of freedom: outside [1/2, 2] with probability about
+  // 5 % for a new set of seeds, deterministic for these)
+  {
+    double m = 0.0, q = 0.0;
+    for (double d : gk) m += d / static_cast<double>(gk.size());
+    for (double d : gk) q += (d - m) * (d - m);
+    const double sd = std::sqrt(q / static_cast<double>(gk.size() - 1));
+    INFO("Green-Kubo: sd over the runs " << sd << ", stated " << std::sqrt(gk_ms));
+    CHECK(sd > 0.5 * std::sqrt(gk_ms));
+    CHECK(sd < 2.0 * std::sqrt(gk_ms));
   }
   double mean = 0.0, ss = 0.0;
   for (double d : msd) mean += d / static_cast<double>(msd.size());

@@ -230,7 +230,7 @@ TEST_CASE("VacfRecorder::diffusion: the stated errors match the spread over seed
   // probability about 3 % for a new set of seeds (mostly from the low side of the 8-sample
   // sd); with these fixed seeds the test is deterministic (ratios 1.46 and 1.42). Over 32
   // seeds (101..132) the ratios are 1.19 and 1.26: the stated errors run about 20 % low,
-  // as the cut is the candidate where the noisy stated error is smallest.
+  // likely because the cut is the candidate where the noisy stated error is smallest.
   const std::size_t n = 1000, frames = 2000, runs = 8;
   const int dim = 3;
   const double h = 0.1;

@@ -25,6 +25,7 @@ namespace {
 // through a pipe and exits; a child that dies says the file is damaged.
 
 void put(std::string& out, const void* p, std::size_t n) {
+  if (n == 0) return;  // an empty vector's data() may be null
   out.append(static_cast<const char*>(p), n);
 }
 template <class T>
@@ -39,6 +40,7 @@ struct Cursor {
   std::size_t at = 0;
   void get(void* p, std::size_t n) {
     if (at + n > in.size()) throw std::out_of_range("short message");
+    if (n == 0) return;  // an empty vector's data() may be null: no memcpy from or to it
     std::memcpy(p, in.data() + at, n);
     at += n;
   }

@@ -120,13 +120,16 @@ VacfRecorder::Diffusion VacfRecorder::diffusion(double mean_free_time) const {
   const double h = dt_;
   const double per_dim = 1.0 / static_cast<double>(dim_);
   // running integrals over D, the whole set and each group
-  const auto integral = [&](const std::vector<double>& c) {
-    std::vector<double> I = detail::running_integral(c, h);
+  const auto over_dim = [&](std::vector<double> I) {
     for (double& x : I) x *= per_dim;
     return I;
   };
+  const auto integral = [&](const std::vector<double>& c) {
+    return over_dim(detail::running_integral(c, h));
+  };
   const std::vector<double> c = uniform(velocity_.curve(L));
-  const std::vector<double> I = integral(c);
+  const std::vector<double> I_time = detail::running_integral(c, h);  // int C dt
+  const std::vector<double> I = over_dim(I_time);
   std::vector<std::vector<double>> Ij;
   std::vector<std::vector<double>> msd_j;
   for (std::size_t g = 0; g < velocity_.groups(); ++g) {
@@ -137,7 +140,7 @@ VacfRecorder::Diffusion VacfRecorder::diffusion(double mean_free_time) const {
   const auto k_least =
       static_cast<std::size_t>(std::max(1.0, std::round(5.0 * mean_free_time / h)));
   const std::size_t k0 =
-      std::max(k_least, detail::auto_cut(c, detail::running_integral(c, h), h, 3.0));
+      std::max(k_least, detail::auto_cut(c, I_time, h, 3.0));
   const detail::Plateau P = detail::plateau(I, Ij, k0, 2 * K / 3, dim_);
   Diffusion d;
   d.green_kubo = P.value;
@@ -154,8 +157,6 @@ VacfRecorder::Diffusion VacfRecorder::diffusion(double mean_free_time) const {
     const MeanSe all = mean_se(e);
     d.einstein = msd_diffusion(uniform(position_.curve(L)), h, dim_, a, b).value + P.remainder;
     d.einstein_error = std::hypot(all.se, P.truncation_error);
-  } else {
-    d.einstein = d.einstein_error = std::numeric_limits<double>::quiet_NaN();
   }
   return d;
 }

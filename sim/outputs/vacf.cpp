@@ -79,15 +79,12 @@ class VacfOutput final : public Output {
     if (recorder_.frames() >= 2) recorder_.write_csv(out.staged("vacf.csv").string());
   }
   void summarize(analysis::JsonObject& s) const override {
-    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
     // a self-diffusion coefficient is that of a gas in equilibrium: a sheared gas's MSD
     // grows with the flow (as t^3 along it), a cooling gas's VACF is not stationary
     const bool ok = equilibrium_ && recorder_.frames() >= 8 && recorder_.has_positions() &&
                     resolved(recorder_.dt(), s);
     s.emplace_back("vacf_dt", recorder_.dt());
-    analysis::VacfRecorder::Diffusion d;
-    d.green_kubo = d.statistical_error = d.truncation_error = d.error = d.cut_time = nan;
-    d.einstein = d.einstein_error = nan;
+    analysis::VacfRecorder::Diffusion d;  // NaN: not measured
     if (ok) d = recorder_.diffusion(summary_number(s, "mean_free_time"));
     s.emplace_back("diffusion_green_kubo", d.green_kubo);
     s.emplace_back("diffusion_green_kubo_error", d.error);

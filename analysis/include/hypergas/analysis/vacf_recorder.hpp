@@ -25,6 +25,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -44,14 +45,16 @@ class VacfRecorder final : public Observer {
   static constexpr std::size_t groups = 8;
 
   /// Self-diffusion coefficient by two routes (see the file comment), length^2/time.
+  /// NaN where not measured (a default Diffusion: none at all).
   struct Diffusion {
-    double green_kubo = 0.0;             ///< at the plateau, the remainder included
-    double statistical_error = 0.0;      ///< of green_kubo, from the groups
-    double truncation_error = 0.0;       ///< |remainder| of the cut
-    double error = 0.0;                  ///< hypot of the two
-    double cut_time = 0.0;               ///< the cut, time units
-    double einstein = 0.0;               ///< MSD slope / 2D around the cut, with the remainder
-    double einstein_error = 0.0;         ///< its statistical error (groups) and truncation
+    static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    double green_kubo = nan;             ///< at the plateau, the remainder included
+    double statistical_error = nan;      ///< of green_kubo, from the groups
+    double truncation_error = nan;       ///< |remainder| of the cut
+    double error = nan;                  ///< hypot of the two
+    double cut_time = nan;               ///< the cut, time units
+    double einstein = nan;               ///< MSD slope / 2D around the cut, with the remainder
+    double einstein_error = nan;         ///< its statistical error (groups) and truncation
     bool reached = false;                ///< the remainder is within the statistical error
   };
   /// diffusion() of the run: the first candidate cut at 5 mean free times (`mean_free_time`,

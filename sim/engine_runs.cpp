@@ -2,7 +2,10 @@
 // the loops over a run's outputs.
 #include "engine_runs.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <stdexcept>
+#include <string_view>
 
 #include <fmt/core.h>
 
@@ -57,6 +60,12 @@ void finish_outputs(const std::vector<std::unique_ptr<Output>>& outputs, DriverS
 void summarize_outputs(const std::vector<std::unique_ptr<Output>>& outputs,
                        analysis::JsonObject& summary) {
   for (const auto& out : outputs) out->summarize(summary);
+  // each key has one owner (outputs/output.hpp): a key written twice is a defect
+  std::vector<std::string_view> keys;
+  for (const auto& [k, v] : summary) keys.push_back(k);
+  std::sort(keys.begin(), keys.end());
+  if (const auto d = std::adjacent_find(keys.begin(), keys.end()); d != keys.end())
+    throw std::logic_error(fmt::format("summary.json: key '{}' written twice", *d));
 }
 
 }  // namespace hypergas::cli

@@ -10,6 +10,9 @@
 
 #include <memory>
 #include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "hypergas/analysis/output.hpp"
@@ -93,7 +96,20 @@ std::vector<Observer*> fine_observers(const std::vector<std::unique_ptr<Output>>
 /// Calls finish() on every output, adding the wall time to st.analysis_s.
 void finish_outputs(const std::vector<std::unique_ptr<Output>>& outputs, DriverState& st);
 
-/// Appends every output's summary keys to `summary`.
+/// The engine's own summary keys (Engine::describe), in its order.
+template <class Engine>
+analysis::JsonObject engine_facts(const Engine& e) {
+  analysis::JsonObject keys;
+  e.describe([&](std::string_view key, const auto& value) {
+    using T = std::decay_t<decltype(value)>;
+    if constexpr (std::is_arithmetic_v<T>) keys.emplace_back(std::string(key), value);
+    else keys.emplace_back(std::string(key), std::string(value));
+  });
+  return keys;
+}
+
+/// Appends every output's summary keys to `summary`; throws std::logic_error if a key is
+/// then there twice (each has one owner).
 void summarize_outputs(const std::vector<std::unique_ptr<Output>>& outputs,
                        analysis::JsonObject& summary);
 

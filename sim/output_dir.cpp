@@ -10,6 +10,7 @@
 #include <fmt/core.h>
 
 #include "hypergas/error.hpp"
+#include "outputs/output.hpp"
 #include "run_driver.hpp"
 
 namespace fs = std::filesystem;
@@ -59,9 +60,9 @@ std::string foreign_entry(const fs::path& dir, const std::vector<std::string>& o
   std::sort(names.begin(), names.end());
   for (const std::string& n : names) {
     // the run's own bookkeeping: its checkpoint (and the checkpoint's temporary file), the
-    // trajectory it is writing and the manifest
+    // files its outputs write as it goes (OutputKind::partial) and the manifest
     if (n == manifest || n == manifest + ".tmp" || n.rfind(Checkpointer::file_name, 0) == 0 ||
-        n == OutputDir::trajectory_partial)
+        partial_output_file(n))
       continue;
     if (std::find(owned.begin(), owned.end(), n) == owned.end()) return n;
   }
@@ -127,6 +128,14 @@ void OutputDir::write(std::string_view name, std::string_view content) {
   f.write(content.data(), static_cast<std::streamsize>(content.size()));
   f.close();
   if (!f) throw std::runtime_error(fmt::format("cannot write '{}'", p.string()));
+}
+
+std::vector<std::string> OutputDir::staged_names() const {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(staging_))
+    if (e.is_regular_file()) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 void OutputDir::commit() {

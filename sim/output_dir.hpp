@@ -35,6 +35,8 @@ class OutputDir {
 
   /// Where file `name` is written before commit (inside the staging folder).
   std::filesystem::path staged(std::string_view name);
+  /// The names of the files in the staging folder, sorted.
+  std::vector<std::string> staged_names() const;
   /// Writes `content` to the staged file `name` (throws std::runtime_error on I/O failure).
   void write(std::string_view name, std::string_view content);
   /// Moves every file of the staging folder into the output folder, removes the previous
@@ -48,9 +50,6 @@ class OutputDir {
   const std::vector<std::string>& committed() const { return committed_; }
   /// The file in which a commit lists the names it wrote.
   static constexpr const char* manifest = ".hypergas-files";
-  /// The trajectory a run writes as it goes (sim/outputs/trajectory.cpp): the run's own file,
-  /// like its checkpoint, moved to trajectory.h5 by the commit.
-  static constexpr const char* trajectory_partial = "trajectory.h5.partial";
 
  private:
   std::filesystem::path dir_;

@@ -104,6 +104,7 @@ int run_command(const RunOptions& o, checkpoint::Reader* resume, bool quiet) {
                  "moments.csv and null in summary.json\n",
                  o.n);
   analysis::write_json(out.staged("summary.json").string(), summary);
+  check_declared_files(out.staged_names(), o);  // each file has its output
   out.commit();
   // The run is complete: its checkpoint would only continue a finished run (and a .tmp left
   // by a process killed while writing one is garbage).

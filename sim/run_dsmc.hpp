@@ -36,6 +36,7 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
   const dsmc::Config cfg = dsmc_config(o);
   const double until = o.until;
   RunPlan plan{.sampling = o.schedule(0.0), .warmup_stops = 0, .substeps = 1, .quench = {}};
+  plan.substeps = plan_substeps(o, registry::EngineKind::dsmc, plan.sampling);
   const double every = plan.sampling.every();
   const int k = o.replicas;
   const RunSetup setup{o, registry::EngineKind::dsmc, plan, 0.0};
@@ -48,10 +49,11 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
   };
 
   // per replica; under MPI (studies::ReplicaSpread) these reach rank 0 from every rank
-  std::vector<double> engine_s(k), rate(k), drift_e(k), drift_p(k), cpp(k), coll(k), kurt(k),
+  std::vector<double> engine_s(k), rate(k), drift_e(k), drift_p(k), coll(k), kurt(k),
       ks(k);
   DriverState st0;
   double engine_bpp = 0.0, setup_s = 0.0;
+  analysis::JsonObject engine_keys;  // replica 0's engine's facts (dsmc::Engine::describe)
   const auto t0 = Clock::now();
   const auto body = [&](int r, Engine& engine, DriverState& st, const Conserved<Engine::dim>& c0,
                         Checkpointer& ck) {
@@ -69,10 +71,12 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
     rate[r] = engine_s[r] > 0.0 ? coll[r] / engine_s[r] : 0.0;
     drift_e[r] = energy_rel_drift(c0, c1);
     drift_p[r] = momentum_drift(c0, c1);
-    cpp[r] = engine.collisions_per_particle();
     kurt[r] = moments(r).last("kurtosis_x");
     ks[r] = moments(r).last("ks_p_speed");
-    if (r == 0) engine_bpp = engine.bytes_per_particle();
+    if (r == 0) {
+      engine_bpp = engine.bytes_per_particle();
+      engine_keys = engine_facts(engine);
+    }
   };
   if (k == 1) {
     std::optional<Engine> engine;
@@ -92,7 +96,7 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
           Checkpointer none;
           body(r, engine, r == 0 ? st0 : st, conserved(engine.particles()), none);
         },
-        {&engine_s, &rate, &drift_e, &drift_p, &cpp, &coll, &kurt, &ks});
+        {&engine_s, &rate, &drift_e, &drift_p, &coll, &kurt, &ks});
     // replica 0 ran on rank 0, which writes the files; the other ranks are done
     if (!studies::replica_root()) return rec;
   }
@@ -128,15 +132,7 @@ RunRecord run_dsmc(const RunOptions& o, bool progress, RunContext& ctx) {
   analysis::JsonObject keys{{"replicas", std::int64_t{k}},
                             {"threads", std::int64_t{o.threads}},
                             {"scheme", std::string(registry::name(o.scheme))}};
-  if (cfg.scheme == dsmc::Scheme::ntc) keys.emplace_back("dt", cfg.dt);
-  if (cfg.scheme == dsmc::Scheme::lanes) {
-    const std::uint32_t m = dsmc::detail::lane_size_of(cfg, Engine::stride);
-    keys.emplace_back("lanes", std::int64_t{dsmc::detail::LaneLayout::make(
-                                   static_cast<std::uint32_t>(o.n), m).lanes});
-    keys.emplace_back("lane_size", std::int64_t{m});
-    keys.emplace_back("epoch", cfg.epoch);
-  }
-  keys.emplace_back("collisions_per_particle", cpp[0]);
+  keys.insert(keys.end(), engine_keys.begin(), engine_keys.end());
   keys.emplace_back("kurtosis_x_replica_mean", kurt_mean);
   keys.emplace_back("kurtosis_x_replica_se", kurt_se);
   keys.emplace_back("ks_p_speed_replica_mean", ks_mean);

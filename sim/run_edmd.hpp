@@ -19,7 +19,6 @@
 #include "hypergas/edmd/observables.hpp"
 #include "hypergas/engine_concept.hpp"
 #include "hypergas/geometry.hpp"
-#include "hypergas/granular/theory.hpp"
 #include "run_driver.hpp"
 #include "run_observer.hpp"
 #include "run_summary.hpp"
@@ -54,6 +53,7 @@ RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
   const double t_eq = sampling_start(o);
   RunPlan plan{.sampling = o.schedule(t_eq), .warmup_stops = equilibration_stops, .substeps = 1,
                .quench = {}};
+  plan.substeps = plan_substeps(o, registry::EngineKind::edmd, plan.sampling);
   const bool granular = o.restitution != 1.0;
   // a granular run equilibrates elastically and is quenched at the end of the equilibration
   if (granular) plan.quench = o.restitution;
@@ -136,8 +136,6 @@ RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
 
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   const bool sheared = o.shear_rate != 0.0;
-  // NaN where Z is undefined: a granular or a sheared gas (edmd::has_pressure_Z)
-  const double Z = engine.pressure_Z_or_nan();
   finish_outputs(rec.outputs, st);
   RunFacts f;
   f.dim = D;
@@ -154,43 +152,11 @@ RunRecord run_edmd(const RunOptions& o, bool progress, RunContext& ctx) {
   f.fraction = two_species(o) ? o.fraction : 0.0;
   f.engine_bytes_per_particle = engine.bytes_per_particle();
   f.setup_s = setup_s;
-  analysis::JsonObject keys{
-      {"packing", engine.packing()},
-      {"scan", std::string(Engine::scan_name)},
-      {"Z", Z},
-      {"collision_rate", engine.collision_rate()},
-      {"mean_free_time", engine.mean_free_time()},
-      {"equilibration_time", t_eq},
-      {"kT", engine.temperature()},  // of the peculiar velocities under shear
-      {"contact_value_from_Z", edmd::contact_value(D, Z, engine.packing())},  // NaN with Z
-      {"lattice_sites", sites},
-      {"vacancies", vacancies},
-  };
-  if (sheared) {
-    // the exact balance E(t) = E(0) - a V int P_xy dt (- thermostat, - inelastic loss):
-    // its largest deviation
-    keys.emplace_back("energy_balance_residual", engine.energy_balance_residual());
-    keys.emplace_back("ideal_collision_rate", engine.lees_edwards().nu0);
-    // the flow's share of the lab-frame kinetic energy, which kT leaves out
-    keys.emplace_back("streaming_kinetic_energy",
-                      engine.streaming_kinetic_energy() / static_cast<double>(engine.size()));
-  }
-  if (granular) {
-    // Haff's t0 of the Enskog gas at the initial temperature (sigma sqrt(m/kT0)), with the
-    // contact value of Henderson (2D) or Carnahan-Starling (3D)
-    double haff = nan;
-    if ((D == 2 || D == 3) && !two_species(o)) {
-      const double eta = engine.packing();
-      const double chi =
-          D == 2 ? granular::chi_henderson(eta) : granular::chi_carnahan_starling(eta);
-      const double a2 = granular::a2_hcs(o.restitution, D);
-      haff = granular::haff_t0(o.restitution, D, a2) /
-             granular::enskog_collision_frequency(D, eta, chi);
-    }
-    keys.emplace_back("haff_t0_enskog", haff);
-    keys.emplace_back("tc_elastic_collisions",
-                      static_cast<std::int64_t>(engine.tc_elastic_collisions()));
-  }
+  // the engine's facts (edmd::Engine::describe), then the lattice start's
+  analysis::JsonObject keys = engine_facts(engine);
+  keys.emplace_back("equilibration_time", t_eq);
+  keys.emplace_back("lattice_sites", sites);
+  keys.emplace_back("vacancies", vacancies);
   rec.summary = run_summary(o, f, keys, st);
   summarize_outputs(rec.outputs, rec.summary);
   return rec;

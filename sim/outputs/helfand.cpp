@@ -89,15 +89,17 @@ class HelfandOutput final : public Output {
 }  // namespace
 
 namespace outputs {
+constexpr std::string_view helfand_files[] = {"transport.csv", "correlations.csv",
+                                             "transport.png"};
 extern const OutputKind helfand{
-    "helfand",
-    [](const RunOptions& o, registry::EngineKind e) {
-      return o.transport && e == registry::EngineKind::edmd;
-    },
-    make_output<HelfandOutput>,
+    .name = "helfand",
+    .wanted = [](const RunOptions& o,
+                 registry::EngineKind e) { return o.transport && e == registry::EngineKind::edmd; },
+    .make = make_output<HelfandOutput>,
     // its correlations or frames are not saved: a resumed run would report a part of the
     // run as the whole
-    false};
+    .checkpointable = false,
+    .files = helfand_files};
 }
 
 }  // namespace hypergas::cli

@@ -73,10 +73,12 @@ class HistogramsOutput final : public Output {
 }  // namespace
 
 namespace outputs {
+constexpr std::string_view histograms_files[] = {"speed_histograms.csv", "speed_histograms.png"};
 extern const OutputKind histograms{
-    "histograms",
-    [](const RunOptions& o, registry::EngineKind) { return o.histogram_every > 0.0; },
-    make_output<HistogramsOutput>};
+    .name = "histograms",
+    .wanted = [](const RunOptions& o, registry::EngineKind) { return o.histogram_every > 0.0; },
+    .make = make_output<HistogramsOutput>,
+    .files = histograms_files};
 }
 
 }  // namespace hypergas::cli

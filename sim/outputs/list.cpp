@@ -1,7 +1,9 @@
 // sim/outputs/list.cpp -- the outputs a run can have, in order (output.hpp). An output's
 // file defines its OutputKind; its one line here makes runs use it.
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 #include <fmt/core.h>
 
@@ -13,7 +15,8 @@
 namespace hypergas::cli {
 
 namespace outputs {
-extern const OutputKind vacf, pressure, transport, helfand, structure, histograms, shear;
+extern const OutputKind granular, conservation, vacf, pressure, transport, helfand, structure,
+    histograms, shear;
 #ifdef HYPERGAS_H5MD
 extern const OutputKind trajectory;
 #endif
@@ -21,25 +24,69 @@ extern const OutputKind trajectory;
 
 namespace {
 const auto kinds = std::to_array<const OutputKind*>({
-    &outputs::moments,    // moments.csv, speed_histogram.csv
-    &outputs::vacf,       // vacf.csv (EDMD)
-    &outputs::pressure,   // Z_error, collision_rate_error (elastic EDMD)
-    &outputs::transport,  // transport.csv, correlations.csv (DSMC --transport)
-    &outputs::helfand,    // transport.csv, correlations.csv (EDMD --transport)
-    &outputs::structure,  // rdf.csv, structure_factor.csv (EDMD --structure)
-    &outputs::histograms, // speed_histograms.csv (--histogram-every)
-    &outputs::shear,      // pressure_tensor.csv, rheology.png (--shear-rate)
+    &outputs::moments,      // moments.csv, speed_histogram.csv
+    &outputs::granular,     // the granular keys (--restitution < 1)
+    &outputs::conservation, // conservation.csv (elastic runs that conserve energy)
+    &outputs::vacf,         // vacf.csv (EDMD)
+    &outputs::pressure,     // Z_error, collision_rate_error (elastic EDMD)
+    &outputs::transport,    // transport.csv, correlations.csv (DSMC --transport)
+    &outputs::helfand,      // transport.csv, correlations.csv (EDMD --transport)
+    &outputs::structure,    // rdf.csv, structure_factor.csv (EDMD --structure)
+    &outputs::histograms,   // speed_histograms.csv (--histogram-every)
+    &outputs::shear,        // pressure_tensor.csv, rheology.png (--shear-rate)
 #ifdef HYPERGAS_H5MD
-    &outputs::trajectory, // trajectory.h5 (--trajectory-every)
+    &outputs::trajectory,   // trajectory.h5 (--trajectory-every)
 #endif
 });
+
+/// The kinds a run has: those it wants, less those another wanted kind excludes.
+std::vector<const OutputKind*> run_kinds(const RunOptions& o, registry::EngineKind engine) {
+  std::vector<const OutputKind*> wanted;
+  for (const OutputKind* k : kinds)
+    if (k->wanted(o, engine)) wanted.push_back(k);
+  std::vector<const OutputKind*> out;
+  for (const OutputKind* k : wanted) {
+    const bool excluded = std::any_of(wanted.begin(), wanted.end(), [&](const OutputKind* by) {
+      return std::find(by->excludes.begin(), by->excludes.end(), k->name) != by->excludes.end();
+    });
+    if (!excluded) out.push_back(k);
+  }
+  return out;
+}
 }  // namespace
 
 std::vector<std::unique_ptr<Output>> make_outputs(const RunSetup& setup) {
   std::vector<std::unique_ptr<Output>> out;
-  for (const OutputKind* k : kinds)
-    if (k->wanted(setup.options, setup.engine)) out.push_back(k->make(setup));
+  RunSetup s = setup;
+  for (const OutputKind* k : run_kinds(setup.options, setup.engine)) {
+    out.push_back(k->make(s));
+    if (k == &outputs::moments) s.moments = static_cast<const MomentsOutput*>(out.back().get());
+  }
   return out;
+}
+
+std::uint64_t plan_substeps(const RunOptions& o, registry::EngineKind engine,
+                            const Schedule& sampling) {
+  std::uint64_t m = 1;
+  for (const OutputKind* k : run_kinds(o, engine))
+    if (k->substeps) m = std::max(m, k->substeps(o, sampling));
+  return m;
+}
+
+bool partial_output_file(std::string_view name) {
+  return std::any_of(kinds.begin(), kinds.end(), [&](const OutputKind* k) {
+    return !k->partial.empty() && k->partial == name;
+  });
+}
+
+void check_declared_files(const std::vector<std::string>& names, const RunOptions& o) {
+  std::vector<std::string_view> declared{"summary.json", "plot.gp", Checkpointer::final_name};
+  for (const OutputKind* k : run_kinds(o, o.engine_kind()))
+    declared.insert(declared.end(), k->files.begin(), k->files.end());
+  for (const std::string& n : names)
+    if (std::find(declared.begin(), declared.end(), n) == declared.end())
+      throw std::logic_error(fmt::format(
+          "{}: a file that no output of the run declares (OutputKind::files)", n));
 }
 
 std::string plot_script(const std::vector<std::unique_ptr<Output>>& outputs,
@@ -73,9 +120,8 @@ std::string plot_script(const std::vector<std::unique_ptr<Output>>& outputs,
 
 bool checkpointable(const RunOptions& o) {
   if (o.replicas != 1) return false;
-  for (const OutputKind* k : kinds)
-    if (k->wanted(o, o.engine_kind()) && !k->checkpointable) return false;
-  return true;
+  const std::vector<const OutputKind*> ks = run_kinds(o, o.engine_kind());
+  return std::all_of(ks.begin(), ks.end(), [](const OutputKind* k) { return k->checkpointable; });
 }
 
 }  // namespace hypergas::cli

@@ -1,6 +1,6 @@
 // sim/outputs/moments.hpp -- moments.csv and speed_histogram.csv: the rows of
-// analysis::MomentsRecorder at every sampling stop, the final speed histogram, and (with
-// --restitution < 1) the granular keys of granular_summary.hpp.
+// analysis::MomentsRecorder at every sampling stop and the final speed histogram, which
+// every run has (the granular output reads its rows).
 #pragma once
 
 #include "hypergas/analysis/moments_recorder.hpp"
@@ -25,10 +25,6 @@ class MomentsOutput final : public Output {
 
  private:
   analysis::MomentsRecorder recorder_;
-  int dim_;
-  bool dsmc_;
-  double restitution_;
-  bool driven_, hard_spheres_, sheared_;
 };
 
 namespace outputs {

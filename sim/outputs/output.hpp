@@ -8,6 +8,13 @@
 // (run_dsmc.hpp, run_edmd.hpp), `hypergas run`, `resume`, the sweep and the default scene
 // iterate over the outputs a run asked for; none of them names an output.
 //
+// An output's OutputKind declares what the rest of the program needs to know before it is
+// made: when a run has it, the files it writes (and the one it writes as the run goes, which
+// the folder code leaves alone), the fine grid it samples on (the run's grid is the finest
+// any wanted output asks for, computed once before any output is made), and the outputs it
+// replaces. Its summary keys are its own: no run body and no other output writes them
+// (summarize_outputs refuses a key written twice).
+//
 // Adding an output with its own file: a file here defining the class and its OutputKind,
 // one line in list.cpp, and (if it plots) scripts/run/<name>.gp.
 #pragma once
@@ -16,6 +23,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,13 +38,17 @@
 namespace hypergas::cli {
 
 class OutputDir;
+class MomentsOutput;
 
 /// What an output knows of the run when it is made (before the engine starts).
 struct RunSetup {
   const RunOptions& options;
   registry::EngineKind engine;
-  RunPlan& plan;              ///< an output may set the fine grid (RunPlan::substeps)
+  const RunPlan& plan;        ///< the stops, fine grid included (plan_substeps)
   double window_start = 0.0;  ///< start of the measurement window (EDMD: end of equilibration)
+  /// The moments output, which every run has first; set by make_outputs for the outputs
+  /// after it (the granular keys read its rows).
+  const MomentsOutput* moments = nullptr;
 };
 
 /// One kind of result of a run (see the file comment).
@@ -73,7 +85,33 @@ struct OutputKind {
   /// Whether a checkpoint can hold the output's state (save, load); a run is checkpointed
   /// only when every output it has can be.
   bool checkpointable = true;
+  /// The files it may write into the run folder (through the staging folder, at the end);
+  /// its PNGs are those its plot draws where gnuplot is found.
+  std::span<const std::string_view> files = {};
+  /// The file it writes in the run folder itself as the run goes (the commit moves it to
+  /// its name among `files`), or empty.
+  std::string_view partial = {};
+  /// The fine stops per sampling interval it needs (RunPlan::substeps), from the options
+  /// and the sampling instants; nullptr: none (1).
+  std::uint64_t (*substeps)(const RunOptions&, const Schedule& sampling) = nullptr;
+  /// The outputs (by name) that a run with this one does not have: it writes their keys
+  /// its own way.
+  std::span<const std::string_view> excludes = {};
 };
+
+/// The fine stops per sampling interval of a run (RunPlan::substeps): the most that any of
+/// its outputs asks for, 1 if none does.
+std::uint64_t plan_substeps(const RunOptions& o, registry::EngineKind engine,
+                            const Schedule& sampling);
+
+/// Whether `name` is a file that an output writes in a run folder as the run goes
+/// (OutputKind::partial).
+bool partial_output_file(std::string_view name);
+
+/// Throws std::logic_error if `names` (the files of a run's staging folder) hold one that
+/// no output of a run with options `o` declares (OutputKind::files), other than the run's
+/// own summary.json, plot.gp and final state (Checkpointer::final_name).
+void check_declared_files(const std::vector<std::string>& names, const RunOptions& o);
 
 /// An output that takes every m-th sampling instant from the first, about `interval` apart:
 /// m = max(1, round(interval / sampling interval)) (--histogram-every, --trajectory-every).

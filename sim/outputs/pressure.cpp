@@ -83,11 +83,12 @@ class PressureOutput final : public Output {
 
 namespace outputs {
 extern const OutputKind pressure{
-    "pressure",
-    [](const RunOptions& o, registry::EngineKind e) {
-      return e == registry::EngineKind::edmd && o.restitution == 1.0;
-    },
-    make_output<PressureOutput>};
+    .name = "pressure",
+    .wanted =
+        [](const RunOptions& o, registry::EngineKind e) {
+          return e == registry::EngineKind::edmd && o.restitution == 1.0;
+        },
+    .make = make_output<PressureOutput>};
 }
 
 }  // namespace hypergas::cli

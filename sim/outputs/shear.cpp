@@ -188,10 +188,15 @@ class ShearOutput final : public Output {
 }  // namespace
 
 namespace outputs {
+constexpr std::string_view shear_files[] = {"pressure_tensor.csv", "rheology.png"};
+// a sheared granular gas has a steady state, whose keys this output writes
+constexpr std::string_view shear_excludes[] = {"granular"};
 extern const OutputKind shear{
-    "shear",
-    [](const RunOptions& o, registry::EngineKind) { return o.shear_rate != 0.0; },
-    make_output<ShearOutput>};
+    .name = "shear",
+    .wanted = [](const RunOptions& o, registry::EngineKind) { return o.shear_rate != 0.0; },
+    .make = make_output<ShearOutput>,
+    .files = shear_files,
+    .excludes = shear_excludes};
 }
 
 }  // namespace hypergas::cli

@@ -51,15 +51,17 @@ class StructureOutput final : public Output {
 }  // namespace
 
 namespace outputs {
+constexpr std::string_view structure_files[] = {"rdf.csv", "structure_factor.csv",
+                                               "structure.png"};
 extern const OutputKind structure{
-    "structure",
-    [](const RunOptions& o, registry::EngineKind e) {
-      return o.structure && e == registry::EngineKind::edmd;
-    },
-    make_output<StructureOutput>,
+    .name = "structure",
+    .wanted = [](const RunOptions& o,
+                 registry::EngineKind e) { return o.structure && e == registry::EngineKind::edmd; },
+    .make = make_output<StructureOutput>,
     // its correlations or frames are not saved: a resumed run would report a part of the
     // run as the whole
-    false};
+    .checkpointable = false,
+    .files = structure_files};
 }
 
 }  // namespace hypergas::cli

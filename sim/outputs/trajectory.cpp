@@ -28,12 +28,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// The file written as the run goes (OutputKind::partial).
+constexpr std::string_view trajectory_partial = "trajectory.h5.partial";
+
 class TrajectoryOutput final : public Output {
  public:
   explicit TrajectoryOutput(const RunSetup& s)
       : stride_(sampling_stride(s.plan, s.options.trajectory_every)),
         every_(static_cast<double>(stride_) * s.plan.sampling.every()),
-        traj_(fs::path(s.options.out) / OutputDir::trajectory_partial, stride_,
+        traj_(fs::path(s.options.out) / trajectory_partial, stride_,
               !(s.engine == registry::EngineKind::dsmc &&
                 s.options.scheme == dsmc::Scheme::lanes),
               parameters(s)) {}
@@ -68,10 +71,13 @@ class TrajectoryOutput final : public Output {
 }  // namespace
 
 namespace outputs {
+constexpr std::string_view trajectory_files[] = {"trajectory.h5"};
 extern const OutputKind trajectory{
-    "trajectory",
-    [](const RunOptions& o, registry::EngineKind) { return o.trajectory_every > 0.0; },
-    make_output<TrajectoryOutput>};
+    .name = "trajectory",
+    .wanted = [](const RunOptions& o, registry::EngineKind) { return o.trajectory_every > 0.0; },
+    .make = make_output<TrajectoryOutput>,
+    .files = trajectory_files,
+    .partial = trajectory_partial};
 }
 
 }  // namespace hypergas::cli

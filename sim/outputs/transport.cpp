@@ -23,13 +23,10 @@ class TransportOutput final : public Output {
  public:
   explicit TransportOutput(const RunSetup& s) {
     const RunOptions& o = s.options;
-    // the fine grid: substeps of about --correlation-dt per sampling interval, and the
-    // samples the recorder will take (the fine stops from transport_warmup on)
-    RunPlan& plan = s.plan;
-    const double every = plan.sampling.every();
-    plan.substeps = std::max<std::uint64_t>(
-        1, static_cast<std::uint64_t>(std::llround(every / o.correlation_dt)));
-    const double dt = every / static_cast<double>(plan.substeps);
+    // the fine grid (OutputKind::substeps) and the samples the recorder will take (the
+    // fine stops from transport_warmup on)
+    const RunPlan& plan = s.plan;
+    const double dt = plan.sampling.every() / static_cast<double>(plan.substeps);
     std::uint64_t frames = 0;
     for (std::uint64_t k = 0;; ++k) {
       const std::optional<Stop> stop = plan.stop(k);
@@ -94,15 +91,22 @@ class TransportOutput final : public Output {
 }  // namespace
 
 namespace outputs {
+constexpr std::string_view transport_files[] = {"transport.csv", "correlations.csv",
+                                               "transport.png"};
 extern const OutputKind transport{
-    "transport",
-    [](const RunOptions& o, registry::EngineKind e) {
-      return o.transport && e == registry::EngineKind::dsmc;
-    },
-    make_output<TransportOutput>,
+    .name = "transport",
+    .wanted = [](const RunOptions& o,
+                 registry::EngineKind e) { return o.transport && e == registry::EngineKind::dsmc; },
+    .make = make_output<TransportOutput>,
     // its correlations or frames are not saved: a resumed run would report a part of the
     // run as the whole
-    false};
+    .checkpointable = false,
+    .files = transport_files,
+    // the correlations' grid: about --correlation-dt between fine stops
+    .substeps = [](const RunOptions& o, const Schedule& sampling) {
+      return std::max<std::uint64_t>(
+          1, static_cast<std::uint64_t>(std::llround(sampling.every() / o.correlation_dt)));
+    }};
 }
 
 }  // namespace hypergas::cli

@@ -63,14 +63,7 @@ class VacfOutput final : public Output {
  public:
   explicit VacfOutput(const RunSetup& s)
       : recorder_(std::min<std::size_t>(static_cast<std::size_t>(s.options.n), vacf_particles)),
-        equilibrium_(s.options.shear_rate == 0.0 && s.options.restitution == 1.0) {
-    // fine stops of about vacf_step estimated mean free times between the sampling instants
-    const double h = vacf_step * estimated_mean_free_time(s.options);
-    const double every = s.plan.sampling.every();
-    if (every > h && std::isfinite(h))
-      s.plan.substeps =
-          std::max(s.plan.substeps, static_cast<std::uint64_t>(std::ceil(every / h)));
-  }
+        equilibrium_(s.options.shear_rate == 0.0 && s.options.restitution == 1.0) {}
 
   Observer* fine() override { return &recorder_; }
   void save(checkpoint::Writer& w) const override { w(recorder_); }
@@ -120,10 +113,18 @@ class VacfOutput final : public Output {
 }  // namespace
 
 namespace outputs {
+constexpr std::string_view vacf_files[] = {"vacf.csv", "vacf.png"};
 extern const OutputKind vacf{
-    "vacf",
-    [](const RunOptions&, registry::EngineKind e) { return e == registry::EngineKind::edmd; },
-    make_output<VacfOutput>};
+    .name = "vacf",
+    .wanted = [](const RunOptions&, registry::EngineKind e) { return e == registry::EngineKind::edmd; },
+    .make = make_output<VacfOutput>,
+    .files = vacf_files,
+    // fine stops of about vacf_step estimated mean free times between the sampling instants
+    .substeps = [](const RunOptions& o, const Schedule& sampling) -> std::uint64_t {
+      const double h = vacf_step * estimated_mean_free_time(o);
+      const double every = sampling.every();
+      return every > h && std::isfinite(h) ? static_cast<std::uint64_t>(std::ceil(every / h)) : 1;
+    }};
 }
 
 }  // namespace hypergas::cli

@@ -10,11 +10,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <catch2/catch.hpp>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -243,6 +246,18 @@ class Child {
   fs::path out_, err_;
 };
 
+/// The number of key `key` in summary.json's text (one object on one line); NaN for null, and
+/// a failed REQUIRE when the key is absent.
+inline double json_number(const std::string& json, const std::string& key) {
+  const std::string k = "\"" + key + "\": ";
+  const auto pos = json.find(k);
+  INFO("key " << key << " in " << json);
+  REQUIRE(pos != std::string::npos);
+  if (json.compare(pos + k.size(), 4, "null") == 0)
+    return std::numeric_limits<double>::quiet_NaN();
+  return std::strtod(json.c_str() + pos + k.size(), nullptr);
+}
+
 /// Runs `hypergas args...` in folder `cwd` to its end.
 inline Result run(const std::vector<std::string>& args, const fs::path& cwd) {
   return Child(args, cwd).wait();
@@ -304,6 +319,36 @@ inline std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> v;
   std::istringstream s(text);
   for (std::string l; std::getline(s, l);) v.push_back(l);
+  return v;
+}
+
+/// The fields of a CSV line.
+inline std::vector<std::string> fields(const std::string& line) {
+  std::vector<std::string> f;
+  std::size_t from = 0;
+  for (;;) {
+    const auto comma = line.find(',', from);
+    f.push_back(line.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
+    if (comma == std::string::npos) return f;
+    from = comma + 1;
+  }
+}
+
+/// Column `name` of a CSV file, as numbers.
+inline std::vector<double> column(const fs::path& csv, const std::string& name) {
+  const auto rows = lines(slurp(csv));
+  REQUIRE(!rows.empty());
+  const auto head = fields(rows.front());
+  const auto at = std::find(head.begin(), head.end(), name);
+  INFO("column " << name << " of " << rows.front());
+  REQUIRE(at != head.end());
+  const auto i = static_cast<std::size_t>(at - head.begin());
+  std::vector<double> v;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    const auto f = fields(rows[r]);
+    REQUIRE(f.size() == head.size());
+    v.push_back(std::strtod(f[i].c_str(), nullptr));
+  }
   return v;
 }
 

@@ -321,47 +321,10 @@ TEST_CASE("run --engine edmd --transport --structure writes its files", "[cli]")
 #ifdef HYPERGAS_CLI_PATH
 namespace {
 
-/// The number of key `key` in summary.json's text (one object on one line); NaN for null, and
-/// a failed REQUIRE when the key is absent.
-double json_number(const std::string& json, const std::string& key) {
-  const std::string k = "\"" + key + "\": ";
-  const auto pos = json.find(k);
-  INFO("key " << key << " in " << json);
-  REQUIRE(pos != std::string::npos);
-  if (json.compare(pos + k.size(), 4, "null") == 0)
-    return std::numeric_limits<double>::quiet_NaN();
-  return std::strtod(json.c_str() + pos + k.size(), nullptr);
-}
+using cli_test::json_number;
 
-/// The fields of a CSV line.
-std::vector<std::string> fields(const std::string& line) {
-  std::vector<std::string> f;
-  std::size_t from = 0;
-  for (;;) {
-    const auto comma = line.find(',', from);
-    f.push_back(line.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
-    if (comma == std::string::npos) return f;
-    from = comma + 1;
-  }
-}
-
-/// Column `name` of a CSV file, as numbers.
-std::vector<double> column(const cli_test::fs::path& csv, const std::string& name) {
-  const auto rows = cli_test::lines(cli_test::slurp(csv));
-  REQUIRE(!rows.empty());
-  const auto head = fields(rows.front());
-  const auto at = std::find(head.begin(), head.end(), name);
-  INFO("column " << name << " of " << rows.front());
-  REQUIRE(at != head.end());
-  const auto i = static_cast<std::size_t>(at - head.begin());
-  std::vector<double> v;
-  for (std::size_t r = 1; r < rows.size(); ++r) {
-    const auto f = fields(rows[r]);
-    REQUIRE(f.size() == head.size());
-    v.push_back(std::strtod(f[i].c_str(), nullptr));
-  }
-  return v;
-}
+using cli_test::column;
+using cli_test::fields;
 
 /// The first `k` fields of every line of `text`, joined again.
 std::string first_columns(const std::string& text, std::size_t k) {

@@ -204,6 +204,19 @@ class Engine {
     return detail::LaneLayout::make(s_.n, detail::lane_size_of(s_.cfg, stride)).lanes;
   }
   std::uint32_t lane_size() const { return detail::lane_size_of(s_.cfg, stride); }
+  /// The engine's facts in a run's summary (summary.json, docs/design.md): put(key, value)
+  /// for each, value a double or std::int64_t: the NTC step dt; the lanes scheme's lanes,
+  /// lane size and epoch; the collisions per particle.
+  template <class Put>
+  void describe(Put&& put) const {
+    if (s_.cfg.scheme == Scheme::ntc) put("dt", s_.cfg.dt);
+    if (s_.cfg.scheme == Scheme::lanes) {
+      put("lanes", std::int64_t{lanes()});
+      put("lane_size", std::int64_t{lane_size()});
+      put("epoch", s_.cfg.epoch);
+    }
+    put("collisions_per_particle", collisions_per_particle());
+  }
   /// Candidates per parallel block (0: the one-thread loop runs).
   std::uint32_t block_size() const { return blocks_.block(); }
   /// Per thread of the team: ticks spent in each phase of the block schedule

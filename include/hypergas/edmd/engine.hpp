@@ -205,15 +205,18 @@ class Engine {
   /// (a^2 L^2 / 24 per particle of unit mass in a uniform gas); 0 without shear.
   double streaming_kinetic_energy() const {
     if (!le_.on()) return 0.0;
-    constexpr int Y = LeesEdwards<D>::y;
     double e = 0.0;
     for (std::size_t i = 0; i < size(); ++i) {
-      const double y =
-          s_.p.position(i)[Y] + s_.p.velocity(i)[Y] * (s_.now - s_.p.local_time(i));
-      const double u = le_.stream(y);
+      const double u = flow_at(i, s_.now);
       e += s_.p.mass(i) * u * u;
     }
     return 0.5 * e;
+  }
+  /// The streaming velocity u(y) (along x) at particle i's height at time t, its position
+  /// moved on from its local clock (the sheared gas; engine_shear.hpp).
+  double flow_at(std::size_t i, double t) const {
+    constexpr int Y = LeesEdwards<D>::y;
+    return le_.stream(s_.p.position(i)[Y] + s_.p.velocity(i)[Y] * (t - s_.p.local_time(i)));
   }
   /// sum m v^2 / 2 of the lab velocities v (the streaming flow included under shear).
   double kinetic_energy() const {
@@ -248,6 +251,28 @@ class Engine {
   /// pressure_Z() where pressure_Z_defined(), NaN otherwise.
   double pressure_Z_or_nan() const {
     return pressure_Z_defined() ? pressure_Z() : std::numeric_limits<double>::quiet_NaN();
+  }
+  /// The engine's facts in a run's summary (summary.json, docs/design.md): put(key, value)
+  /// for each, value a double, std::int64_t or std::string_view. Z and its contact value
+  /// are NaN where Z is undefined (pressure_Z_defined); a sheared gas adds its energy
+  /// balance, the ideal gas's collision rate at T0 and the flow's kinetic energy per
+  /// particle (which kT leaves out), a granular one the TC model's elastic collisions.
+  template <class Put>
+  void describe(Put&& put) const {
+    const double Z = pressure_Z_or_nan();
+    put("packing", packing());
+    put("scan", Scan::name);
+    put("Z", Z);
+    put("collision_rate", collision_rate());
+    put("mean_free_time", mean_free_time());
+    put("kT", temperature());  // of the peculiar velocities under shear
+    put("contact_value_from_Z", contact_value(D, Z, packing()));  // NaN with Z
+    if (le_.on()) {
+      put("energy_balance_residual", energy_balance_residual());
+      put("ideal_collision_rate", le_.nu0);
+      put("streaming_kinetic_energy", streaming_kinetic_energy() / static_cast<double>(size()));
+    }
+    if (alpha_ < 1.0) put("tc_elastic_collisions", static_cast<std::int64_t>(s_.ntc));
   }
   /// Collisions per particle per unit time in the window (2 per collision); in a cooling
   /// granular gas the mean over the window.

@@ -65,12 +65,10 @@ void Engine<D, F, Scan>::start_shear() {
 
 template <int D, Features F, class Scan>
 typename LeesEdwards<D>::Mat Engine<D, F, Scan>::kinetic_tensor(double t) const {
-  constexpr int Y = LeesEdwards<D>::y;
   typename LeesEdwards<D>::Mat K = LeesEdwards<D>::Mat::Zero();
   for (std::uint32_t i = 0; i < size(); ++i) {
-    const double y = s_.p.position(i)[Y] + s_.p.velocity(i)[Y] * (t - s_.p.local_time(i));
     Vec<D> c = s_.p.velocity(i);
-    c[0] -= le_.stream(y);
+    c[0] -= flow_at(i, t);
     K += (c * c.transpose()) / s_.p.inv_mass(i);
   }
   return K;

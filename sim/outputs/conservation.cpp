@@ -44,16 +44,19 @@ class ConservationSeries final : public Observer {
       scale += m * std::sqrt(v2);
     }
     if (rows_.empty()) {
-      energy0_ = static_cast<double>(energy);
-      scale0_ = static_cast<double>(scale);
-      for (int k = 0; k < 6; ++k) momentum0_[k] = static_cast<double>(p[k]);
+      energy0_ = split(energy);
+      scale0_ = split(scale);
+      for (int k = 0; k < 6; ++k) momentum0_[k] = split(p[k]);
     }
+    const long double e0 = join(energy0_), s0 = join(scale0_);
     long double d2 = 0.0L;
-    for (int k = 0; k < s.dim; ++k) d2 += (p[k] - momentum0_[k]) * (p[k] - momentum0_[k]);
+    for (int k = 0; k < s.dim; ++k) {
+      const long double dp = p[k] - join(momentum0_[k]);
+      d2 += dp * dp;
+    }
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    rows_.push_back({s.time,
-                     energy0_ > 0.0 ? static_cast<double>((energy - energy0_) / energy0_) : nan,
-                     scale0_ > 0.0 ? static_cast<double>(std::sqrt(d2) / scale0_) : nan});
+    rows_.push_back({s.time, e0 > 0.0L ? static_cast<double>((energy - e0) / e0) : nan,
+                     s0 > 0.0L ? static_cast<double>(std::sqrt(d2) / s0) : nan});
   }
   template <class Archive>
   void io(Archive& a) {
@@ -63,8 +66,19 @@ class ConservationSeries final : public Observer {
   const std::vector<std::vector<double>>& rows() const { return rows_; }
 
  private:
-  double energy0_ = 0.0, scale0_ = 0.0;
-  std::array<double, 6> momentum0_{};
+  /// A long double as the sum of two doubles (exact for the 64-bit significand), so that a
+  /// checkpoint holds the first instant's sums exactly and the first row is exactly 0.
+  using Split = std::array<double, 2>;
+  static Split split(long double x) {
+    const double hi = static_cast<double>(x);
+    return {hi, static_cast<double>(x - hi)};
+  }
+  static long double join(const Split& x) {
+    return static_cast<long double>(x[0]) + static_cast<long double>(x[1]);
+  }
+
+  Split energy0_{}, scale0_{};
+  std::array<Split, 6> momentum0_{};
   std::vector<std::vector<double>> rows_;
 };
 

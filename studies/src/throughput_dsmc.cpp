@@ -29,7 +29,7 @@ double pair_update_probe(std::size_t n, double updates, std::uint64_t seed, bool
   double* v = p.velocity_data().data();
   constexpr int S = Particles<D>::stride;
   for (std::size_t i = 0; i < n * S; ++i) v[i] = 1e-3 * static_cast<double>(i % 1000);
-  dsmc::detail::advise_huge_pages(v, n * S * sizeof(double));  // as the engine does
+  dsmc::advise_huge_pages(v, n * S * sizeof(double));  // as the engine does
   Rng rng(seed, 99);
   constexpr int ring = 32;
   std::uint32_t ri[ring], rj[ring];
@@ -81,11 +81,11 @@ DsmcPoint time_engine(std::size_t n, int threads, double min_collisions, std::ui
   e.reset_schedule_profile();
   const auto c0 = e.collisions(), k0 = e.candidates();
   const double t_run = 2.0 * min_collisions / static_cast<double>(n);
-  const std::uint64_t tick0 = dsmc::detail::ticks_now();
+  const std::uint64_t tick0 = dsmc::ticks_now();
   const Stopwatch clock(cpu_clock && threads == 1);
   e.run_until(e.time() + t_run);
   const double w = clock.seconds();
-  const double ticks = static_cast<double>(dsmc::detail::ticks_now() - tick0);
+  const double ticks = static_cast<double>(dsmc::ticks_now() - tick0);
   const double dc = static_cast<double>(e.collisions() - c0);
   const double dk = static_cast<double>(e.candidates() - k0);
   return {dc / w, dk / w, dc / dk, e.bytes_per_particle(), w, ticks / w, e.schedule_profile()};
@@ -215,10 +215,10 @@ void bench_point(std::ostream& out, const DsmcBenchOptions& o, std::size_t n) {
       out << buf;
       std::string extra;
       if (cases[s].scheme == dsmc::Scheme::lanes) {
-        const std::uint32_t m = dsmc::detail::lane_size_of(cases[s], Particles<D>::stride);
+        const dsmc::LaneShape shape =
+            dsmc::lane_shape(cases[s], static_cast<std::uint32_t>(n), Particles<D>::stride);
         std::snprintf(buf, sizeof buf, ",\"lanes\":%u,\"lane_size\":%u,\"epoch\":%.17g",
-                      dsmc::detail::LaneLayout::make(static_cast<std::uint32_t>(n), m).lanes, m,
-                      cases[s].epoch);
+                      shape.lanes, shape.lane_size, cases[s].epoch);
         extra += buf;
       }
       if (exact < ns) {

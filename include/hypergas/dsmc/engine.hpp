@@ -83,6 +83,17 @@
 
 namespace hypergas::dsmc {
 
+/// The lanes scheme's shape for n particles of `stride` doubles under cfg: the number of
+/// lanes L and the lane size M asked for (detail/kac_lanes.hpp); Engine::lanes() and
+/// lane_size() of an engine with that configuration.
+struct LaneShape {
+  std::uint32_t lanes = 0, lane_size = 0;
+};
+inline LaneShape lane_shape(const Config& cfg, std::uint32_t n, int stride) {
+  const std::uint32_t m = detail::lane_size_of(cfg, stride);
+  return {detail::LaneLayout::make(n, m).lanes, m};
+}
+
 /// The DSMC engine for dimension D, collision model `Model`, particle features F (Features{}
 /// or Features{.species = true}). Time in equilibrium mean collision times.
 // clang-format off
@@ -200,10 +211,8 @@ class Engine {
   /// run the one-thread loop).
   int threads() const { return blocks_.threads(); }
   /// The lanes scheme: the number of lanes L and the lane size M asked for (detail/kac_lanes.hpp).
-  std::uint32_t lanes() const {
-    return detail::LaneLayout::make(s_.n, detail::lane_size_of(s_.cfg, stride)).lanes;
-  }
-  std::uint32_t lane_size() const { return detail::lane_size_of(s_.cfg, stride); }
+  std::uint32_t lanes() const { return lane_shape(s_.cfg, s_.n, stride).lanes; }
+  std::uint32_t lane_size() const { return lane_shape(s_.cfg, s_.n, stride).lane_size; }
   /// The engine's facts in a run's summary (summary.json, docs/design.md): put(key, value)
   /// for each, value a double or std::int64_t: the NTC step dt; the lanes scheme's lanes,
   /// lane size and epoch; the collisions per particle.
@@ -353,7 +362,7 @@ Engine<D, Model, F>::Engine(const Config& cfg, ParticlesT particles, bool given)
   if (cfg.drive != Drive::none && D < 2)
     throw InvalidInput("DSMC: the white-noise drive needs D >= 2 (its strength comes from the "
                        "Sonine theory of D >= 2)");
-  detail::advise_huge_pages(s_.p.velocity_data().data(),
+  advise_huge_pages(s_.p.velocity_data().data(),
                             s_.p.velocity_data().size() * sizeof(double));
   detail::retune(s_, true);
 }

@@ -16,7 +16,7 @@
 #include <sys/mman.h>
 #endif
 
-namespace hypergas::dsmc::detail {
+namespace hypergas::dsmc {
 
 /// Advises huge pages for the 2 MiB-aligned interior of [p, p + bytes); no effect on other
 /// systems or for arrays under 4 MiB.
@@ -41,4 +41,4 @@ inline void advise_huge_pages(void* p, std::size_t bytes) {
 #endif
 }
 
-}  // namespace hypergas::dsmc::detail
+}  // namespace hypergas::dsmc

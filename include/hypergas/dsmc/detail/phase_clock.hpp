@@ -37,8 +37,6 @@ struct alignas(64) PhaseTicks {  // one cache line per thread or more
   }
 };
 
-namespace detail {
-
 /// The time-stamp counter (x86), else a steady clock in nanoseconds.
 inline std::uint64_t ticks_now() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -48,6 +46,8 @@ inline std::uint64_t ticks_now() {
       std::chrono::steady_clock::now().time_since_epoch() / std::chrono::nanoseconds(1));
 #endif
 }
+
+namespace detail {
 
 /// Stamps the end of one phase and the start of the next.
 class PhaseClock {

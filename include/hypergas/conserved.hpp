@@ -22,23 +22,28 @@ struct Conserved {
   long double momentum_scale = 0.0L;
 };
 
+/// Adds one particle of inverse mass w and velocity v[0 .. dim) to `c` (dim <= D: the
+/// sums of a runtime dimension, as a snapshot's, in a Conserved of the largest D); a
+/// particle of infinite mass (w = 0) adds nothing.
+template <int D, class V>
+void add_particle(Conserved<D>& c, const V& v, int dim, double w) {
+  if (!(w > 0.0)) return;
+  const long double m = 1.0L / w;
+  long double v2 = 0.0L;
+  for (int k = 0; k < dim; ++k) {
+    const long double vk = v[k];
+    v2 += vk * vk;
+    c.momentum[k] += m * vk;
+  }
+  c.energy += 0.5L * m * v2;
+  c.momentum_scale += m * std::sqrt(v2);
+}
+
 /// Sums of momentum and energy over `p` (O(N)).
 template <int D, Features F>
 Conserved<D> conserved(const Particles<D, F>& p) {
   Conserved<D> c;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double w = p.inv_mass(i);
-    if (!(w > 0.0)) continue;
-    const long double m = 1.0L / w;
-    long double v2 = 0.0L;
-    for (int k = 0; k < D; ++k) {
-      const long double vk = p.velocity(i)[k];
-      v2 += vk * vk;
-      c.momentum[k] += m * vk;
-    }
-    c.energy += 0.5L * m * v2;
-    c.momentum_scale += m * std::sqrt(v2);
-  }
+  for (std::size_t i = 0; i < p.size(); ++i) add_particle(c, p.velocity(i), D, p.inv_mass(i));
   return c;
 }
 

@@ -139,17 +139,13 @@ std::vector<std::string> OutputDir::staged_names() const {
 }
 
 void OutputDir::commit() {
-  std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(staging_))
-    if (e.is_regular_file()) files.push_back(e.path());
   // summary.json last: where it is present, every other file of the run is in place (a
   // sweep takes a case folder with a summary.json and no checkpoint as finished).
-  std::sort(files.begin(), files.end(), [](const fs::path& a, const fs::path& b) {
-    const bool sa = a.filename() == "summary.json", sb = b.filename() == "summary.json";
-    return sa != sb ? sb : a < b;
-  });
-  std::vector<std::string> names;
-  for (const fs::path& p : files) names.push_back(p.filename().string());
+  std::vector<std::string> names = staged_names();
+  std::stable_partition(names.begin(), names.end(),
+                        [](const std::string& n) { return n != "summary.json"; });
+  std::vector<fs::path> files;
+  for (const std::string& n : names) files.push_back(staging_ / n);
   // the manifest lists the old and the new files while both may be present, so a process
   // killed in between leaves a folder the next run accepts
   std::vector<std::string> both = previous_;

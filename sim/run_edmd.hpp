@@ -16,7 +16,6 @@
 #include "engine_runs.hpp"
 #include "hypergas/conserved.hpp"
 #include "hypergas/edmd/lattice.hpp"
-#include "hypergas/edmd/observables.hpp"
 #include "hypergas/engine_concept.hpp"
 #include "hypergas/geometry.hpp"
 #include "run_driver.hpp"

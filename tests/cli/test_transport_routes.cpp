@@ -18,26 +18,7 @@ namespace {
 
 namespace fs = cli_test::fs;
 
-/// The number of key `key` in summary.json's text; NaN for null; a failed REQUIRE when absent.
-double number(const std::string& json, const std::string& key) {
-  const std::string k = "\"" + key + "\": ";
-  const auto pos = json.find(k);
-  INFO("key " << key);
-  REQUIRE(pos != std::string::npos);
-  if (json.compare(pos + k.size(), 4, "null") == 0) return std::numeric_limits<double>::quiet_NaN();
-  return std::strtod(json.c_str() + pos + k.size(), nullptr);
-}
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> f;
-  std::size_t from = 0;
-  for (;;) {
-    const auto comma = line.find(',', from);
-    f.push_back(line.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
-    if (comma == std::string::npos) return f;
-    from = comma + 1;
-  }
-}
+using cli_test::json_number;
 
 /// The CSV table `csv` as its header and rows of fields.
 struct Table {
@@ -66,8 +47,8 @@ struct Table {
 Table read(const fs::path& csv) {
   const auto lines = cli_test::lines(cli_test::slurp(csv));
   REQUIRE(lines.size() >= 2);
-  Table t{split(lines.front()), {}};
-  for (std::size_t i = 1; i < lines.size(); ++i) t.rows.push_back(split(lines[i]));
+  Table t{cli_test::fields(lines.front()), {}};
+  for (std::size_t i = 1; i < lines.size(); ++i) t.rows.push_back(cli_test::fields(lines[i]));
   return t;
 }
 
@@ -129,7 +110,7 @@ TEST_CASE("EDMD --transport: self-diffusion by the plateau rule equals the MSD s
                           "viscosity_route_difference_se",
                           "thermal_conductivity_route_difference_se"}) {
       INFO(k);
-      CHECK(std::fabs(number(js, k)) <= 3.0);
+      CHECK(std::fabs(json_number(js, k)) <= 3.0);
     }
   }
 }
@@ -147,7 +128,7 @@ TEST_CASE("DSMC --transport holds Green-Kubo against Einstein self-diffusion", "
   INFO(res.err);
   REQUIRE(res.code == 0);
   const double z =
-      number(cli_test::slurp(out / "summary.json"), "self_diffusion_route_difference_se");
+      json_number(cli_test::slurp(out / "summary.json"), "self_diffusion_route_difference_se");
   CHECK(std::isfinite(z));
   CHECK(std::fabs(z) <= 3.0);
 }
